@@ -1,0 +1,52 @@
+#include "CommandLine.h"
+
+#include <QStringList>
+#include <cmath>
+
+namespace pf::cli {
+
+std::optional<double> realOption(const QCommandLineParser& parser, const QString& name, double min,
+                                 double max) {
+    if (!parser.isSet(name)) return std::nullopt;
+    bool ok = false;
+    const QString text = parser.value(name);
+    const double value = text.toDouble(&ok);
+    if (!ok || !std::isfinite(value))
+        throw UsageError{QStringLiteral("--%1: '%2' is not a number").arg(name, text)};
+    if (value < min || value > max)
+        throw UsageError{
+            QStringLiteral("--%1: %2 is outside [%3, %4]").arg(name, text).arg(min).arg(max)};
+    return value;
+}
+
+std::optional<long long> integerOption(const QCommandLineParser& parser, const QString& name,
+                                       long long min, long long max) {
+    if (!parser.isSet(name)) return std::nullopt;
+    bool ok = false;
+    const QString text = parser.value(name);
+    const long long value = text.toLongLong(&ok);
+    if (!ok) throw UsageError{QStringLiteral("--%1: '%2' is not a whole number").arg(name, text)};
+    if (value < min || value > max)
+        throw UsageError{
+            QStringLiteral("--%1: %2 is outside [%3, %4]").arg(name, text).arg(min).arg(max)};
+    return value;
+}
+
+std::optional<std::uint64_t> seedOption(const QCommandLineParser& parser, const QString& name) {
+    if (!parser.isSet(name)) return std::nullopt;
+    bool ok = false;
+    const QString text = parser.value(name);
+    const qulonglong value = text.toULongLong(&ok);
+    if (!ok)
+        throw UsageError{
+            QStringLiteral("--%1: '%2' is not a whole number from 0 to 2^64-1").arg(name, text)};
+    return static_cast<std::uint64_t>(value);
+}
+
+void rejectExtraArguments(const QCommandLineParser& parser, int allowed) {
+    const QStringList extra = parser.positionalArguments().mid(allowed);
+    if (!extra.isEmpty())
+        throw UsageError{QStringLiteral("unexpected argument '%1'").arg(extra.first())};
+}
+
+} // namespace pf::cli

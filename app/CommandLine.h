@@ -1,0 +1,25 @@
+#pragma once
+
+#include <QCommandLineParser>
+#include <QString>
+#include <cstdint>
+#include <optional>
+
+namespace pf::cli {
+
+// Thrown for bad command-line input; main() prints the message on one line and exits 1.
+struct UsageError {
+    QString message;
+};
+
+// Reads an option's value if given, checking the type and the inclusive range.
+std::optional<double> realOption(const QCommandLineParser& parser, const QString& name, double min,
+                                 double max);
+std::optional<long long> integerOption(const QCommandLineParser& parser, const QString& name,
+                                       long long min, long long max);
+std::optional<std::uint64_t> seedOption(const QCommandLineParser& parser, const QString& name);
+
+// Throws UsageError for positional arguments beyond the subcommand itself.
+void rejectExtraArguments(const QCommandLineParser& parser, int allowed);
+
+} // namespace pf::cli

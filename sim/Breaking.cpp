@@ -1,0 +1,247 @@
+#include "Breaking.h"
+
+#include "Normals.h"
+#include "TopologyEdit.h"
+
+#include <cmath>
+
+namespace pf {
+
+double breakProbability(double l, double l0, double lrl, double nij, double nrl, double phi) {
+    if (!(l < l0) || !(l0 > 0.0)) return 0.0;
+    const double contraction = 1.0 - l / l0;
+    const double lengthRatio = l / (l + lrl);
+    const double curvature = (1.0 - phi * nij) * (1.0 + phi * nrl) / 4.0;
+    return contraction * lengthRatio * curvature;
+}
+
+double breakProbabilityPerStep(double P, double h, double referenceStep) {
+    if (P <= 0.0) return 0.0;
+    if (P >= 1.0) return 1.0;
+    // 1 - (1 - P)^(h/ref), written with log1p/expm1 to stay accurate for tiny P.
+    return -std::expm1((h / referenceStep) * std::log1p(-P));
+}
+
+double breakOffset(double l, double l0, double psi) {
+    if (!(l < l0)) return 0.0;
+    return 0.5 * psi * std::sqrt(l0 * l0 - l * l);
+}
+
+namespace {
+
+double materialArea(const Sheet& sheet, const Triangle& t) {
+    const auto& X = sheet.verts.X;
+    const Vec2 a = X[t.v[1]] - X[t.v[0]];
+    const Vec2 b = X[t.v[2]] - X[t.v[0]];
+    return 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+}
+
+// Splits triangle slot t across edge (i, j) at n. The slot keeps the half at the
+// edge's first vertex; the other half is appended. Orientation is preserved.
+// Returns the new triangle's id.
+Index splitTriangle(Sheet& sheet, Index t, Index i, Index j, Index n, Index ein, Index enj,
+                    Index eon) {
+    const Triangle old = sheet.tris[t];
+    const int k = sheet.edgeSlot(t, i, j);
+    const Index p = old.v[k], q = old.v[(k + 1) % 3], o = old.v[(k + 2) % 3];
+    const Index halfP = p == i ? ein : enj;
+    const Index halfQ = q == i ? ein : enj;
+    const Index eqo = old.e[(k + 1) % 3], eop = old.e[(k + 2) % 3];
+
+    sheet.tris[t] = Triangle{{p, n, o}, {halfP, eon, eop}};
+    sheet.tris.push_back(Triangle{{n, q, o}, {halfQ, eqo, eon}});
+    const Index t2 = sheet.triangleCount() - 1;
+    replaceFace(sheet, eqo, t, t2);
+    attachFace(sheet, halfP, t);
+    attachFace(sheet, halfQ, t2);
+    attachFace(sheet, eon, t);
+    attachFace(sheet, eon, t2);
+    return t2;
+}
+
+} // namespace
+
+Index breakEdge(Sheet& sheet, Index spring, const std::vector<Vec3>& normals, double psi,
+                std::int64_t step) {
+    auto& V = sheet.verts;
+    auto& S = sheet.springs;
+    const Index i = S.a[spring], j = S.b[spring];
+    const Index t1 = S.faces[spring][0], t2 = S.faces[spring][1];
+    const Index r = sheet.oppositeVertex(t1, i, j);
+    const Index l = sheet.oppositeVertex(t2, i, j);
+
+    DamageEvent ev;
+    ev.kind = EventKind::Break;
+    ev.step = step;
+    ev.edge = spring;
+    ev.oldTris = {sheet.tris[t1], sheet.tris[t2]};
+
+    // Eq. 11, toward the side the edge already bends to: if the edge's midpoint lies
+    // above the r-l midpoint along the edge normal, the edge is a ridge and n rises.
+    const double len = (V.x[i] - V.x[j]).norm();
+    const double l0 = S.rest[spring];
+    Vec3 edgeNormal = normals[i] + normals[j];
+    edgeNormal = edgeNormal.norm() > 0.0 ? Vec3(edgeNormal.normalized()) : Vec3::UnitY();
+    const Vec3 mid = 0.5 * (V.x[i] + V.x[j]);
+    const double bulge = (mid - 0.5 * (V.x[r] + V.x[l])).dot(edgeNormal);
+    const double side = bulge < 0.0 ? -1.0 : 1.0;
+    const Vec3 xn = mid + side * breakOffset(len, l0, psi) * edgeNormal;
+
+    // Lumped masses follow rest areas: i and j each give up a sixth of the two old
+    // triangles' mass, n receives both. Store exactly what was taken so recovery
+    // gives it back bit for bit (m - (m - δ) is exact by Sterbenz' lemma).
+    const double delta = sheet.density *
+                         (materialArea(sheet, ev.oldTris[0]) + materialArea(sheet, ev.oldTris[1])) /
+                         6.0;
+    const double mi = V.m[i], mj = V.m[j];
+    V.m[i] = mi - delta;
+    V.m[j] = mj - delta;
+    ev.massTaken = {mi - V.m[i], mj - V.m[j]};
+
+    const Index n = sheet.addVertex(xn, 0.5 * (V.v[i] + V.v[j]), ev.massTaken[0] + ev.massTaken[1],
+                                    0.5 * (V.X[i] + V.X[j]));
+    const std::uint8_t hinged = S.hinged[spring];
+    const Index ein =
+        sheet.addSpring(i, n, sheet.materialDistance(i, n), SpringKind::Structural, true);
+    const Index enj =
+        sheet.addSpring(n, j, sheet.materialDistance(n, j), SpringKind::Structural, true);
+    const Index ern =
+        sheet.addSpring(r, n, sheet.materialDistance(r, n), SpringKind::Structural, false);
+    const Index enl =
+        sheet.addSpring(n, l, sheet.materialDistance(n, l), SpringKind::Structural, false);
+    // The halves lie across the same r-l pair: a hinge already there serves them too.
+    S.hinged[ein] = hinged;
+    S.hinged[enj] = hinged;
+
+    const Index t3 = splitTriangle(sheet, t1, i, j, n, ein, enj, ern);
+    const Index t4 = splitTriangle(sheet, t2, i, j, n, ein, enj, enl);
+
+    // e_ij becomes an unbreakable crease remembering the compressed length.
+    S.kind[spring] = SpringKind::Crease;
+    S.breakable[spring] = 0;
+    S.rest[spring] = len;
+    S.faces[spring] = {kNone, kNone};
+
+    ev.vertex = n;
+    ev.springs = {ein, enj, ern, enl};
+    ev.tris = {t1, t2, t3, t4};
+    ev.newTris = {sheet.tris[t1], sheet.tris[t2], sheet.tris[t3], sheet.tris[t4]};
+    sheet.events.push_back(ev);
+    const Index id = static_cast<Index>(sheet.events.size()) - 1;
+    S.event[spring] = id;
+    return id;
+}
+
+bool canRecover(const Sheet& sheet, Index event) {
+    if (event < 0 || event >= static_cast<Index>(sheet.events.size())) return false;
+    const DamageEvent& ev = sheet.events[event];
+    if (!ev.active) return false;
+    const auto& S = sheet.springs;
+    if (ev.kind == EventKind::Hinge) return true;
+    if (S.kind[ev.edge] != SpringKind::Crease || S.event[ev.edge] != event) return false;
+    if (!S.breakable[ev.springs[0]] || !S.breakable[ev.springs[1]]) return false;
+    for (int k = 0; k < 4; ++k)
+        if (!(sheet.tris[ev.tris[k]] == ev.newTris[k])) return false;
+    return true;
+}
+
+namespace {
+
+void recoverHinge(Sheet& sheet, Index event) {
+    DamageEvent& ev = sheet.events[event];
+    sheet.springs.hinged[ev.edge] = 0;
+    ev.active = false;
+    removeSpringAt(sheet, ev.springs[0]);
+}
+
+bool isOneOf(Index id, const std::array<Index, 4>& ids) {
+    return id == ids[0] || id == ids[1] || id == ids[2] || id == ids[3];
+}
+
+} // namespace
+
+bool recoverEvent(Sheet& sheet, Index event) {
+    if (!canRecover(sheet, event)) return false;
+    if (sheet.events[event].kind == EventKind::Hinge) {
+        recoverHinge(sheet, event);
+        return true;
+    }
+
+    // Hinges that hang on n or on the springs about to go, newest first.
+    for (Index h = static_cast<Index>(sheet.events.size()) - 1; h > event; --h) {
+        const DamageEvent& hv = sheet.events[h];
+        if (!hv.active || hv.kind != EventKind::Hinge) continue;
+        const DamageEvent& ev = sheet.events[event];
+        const Index hs = hv.springs[0];
+        const bool usesN = sheet.springs.a[hs] == ev.vertex || sheet.springs.b[hs] == ev.vertex;
+        if (usesN || isOneOf(hv.edge, ev.springs)) recoverHinge(sheet, h);
+    }
+
+    // Ids are read from the event after each removal: a removal renames references.
+    DamageEvent& ev = sheet.events[event];
+    auto& S = sheet.springs;
+    const Index i = S.a[ev.edge], j = S.b[ev.edge];
+
+    for (int k = 0; k < 2; ++k) {
+        const Index slot = ev.tris[k], moved = ev.tris[k + 2];
+        sheet.tris[slot] = ev.oldTris[k];
+        for (Index e : ev.oldTris[k].e)
+            if (e != ev.edge) replaceFace(sheet, e, moved, slot);
+    }
+    for (Index s : ev.springs) S.faces[s] = {kNone, kNone};
+    removeTriangleAt(sheet, ev.tris[3]);
+    removeTriangleAt(sheet, ev.tris[2]);
+
+    S.kind[ev.edge] = SpringKind::Structural;
+    S.breakable[ev.edge] = 1;
+    S.rest[ev.edge] = sheet.materialDistance(i, j);
+    S.faces[ev.edge] = {ev.tris[0], ev.tris[1]};
+    S.event[ev.edge] = kNone;
+
+    for (int k = 3; k >= 0; --k) removeSpringAt(sheet, ev.springs[k]);
+
+    sheet.verts.m[i] += ev.massTaken[0];
+    sheet.verts.m[j] += ev.massTaken[1];
+    ev.active = false;
+    removeVertexAt(sheet, ev.vertex);
+    return true;
+}
+
+int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t step,
+                 BreakScratch& scratch) {
+    computeVertexNormals(sheet, scratch.normals);
+    scratch.touched.assign(sheet.tris.size(), 0);
+    const auto& normals = scratch.normals;
+    int breaks = 0;
+    // Springs appended by a break in this pass are not visited until the next step.
+    const Index count = sheet.springs.size();
+    for (Index s = 0; s < count; ++s) {
+        const auto& S = sheet.springs;
+        if (S.kind[s] != SpringKind::Structural || !S.breakable[s]) continue;
+        const Index t1 = S.faces[s][0], t2 = S.faces[s][1];
+        if (t1 == kNone || t2 == kNone) continue;
+        const auto& V = sheet.verts;
+        const Index i = S.a[s], j = S.b[s];
+        if (V.pinned[i] && V.pinned[j]) continue;
+        const double l = (V.x[i] - V.x[j]).norm();
+        const double l0 = S.rest[s];
+        if (!(l < l0)) continue;
+        if (scratch.touched[t1] || scratch.touched[t2]) continue;
+        const Index r = sheet.oppositeVertex(t1, i, j);
+        const Index lv = sheet.oppositeVertex(t2, i, j);
+        const double P =
+            breakProbability(l, l0, (V.x[r] - V.x[lv]).norm(), normals[i].dot(normals[j]),
+                             normals[r].dot(normals[lv]), params.phi);
+        const double p = breakProbabilityPerStep(P, params.dt, params.breakReferenceStep);
+        if (!(rng.uniform() < p)) continue;
+        const Index ev = breakEdge(sheet, s, normals, params.psi, step);
+        for (Index t : sheet.events[ev].tris) {
+            if (t >= static_cast<Index>(scratch.touched.size())) scratch.touched.resize(t + 1, 0);
+            scratch.touched[t] = 1;
+        }
+        ++breaks;
+    }
+    return breaks;
+}
+
+} // namespace pf

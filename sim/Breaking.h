@@ -1,0 +1,51 @@
+#pragma once
+
+#include "Params.h"
+#include "Rng.h"
+#include "Sheet.h"
+
+#include <vector>
+
+namespace pf {
+
+// Eq. 10: probability that a compressed breakable spring breaks.
+//   l, l0: current and rest length of e_ij; lrl = |x_r - x_l|;
+//   nij = n_i·n_j, nrl = n_r·n_l; phi = fragility.
+// Zero for a spring that is not compressed (Eq. 10 is only defined for l < l0).
+double breakProbability(double l, double l0, double lrl, double nij, double nrl, double phi);
+
+// Eq. 10 is read as a probability per reference step; the probability per step of length h.
+double breakProbabilityPerStep(double P, double h, double referenceStep);
+
+// Eq. 11: how far the new vertex moves along the normal, h = ψ/2 sqrt(l0² - l²).
+double breakOffset(double l, double l0, double psi);
+
+// Breaks structural spring `spring` (which must have two faces): inserts vertex n
+// between its ends, offset by Eq. 11 toward the side the edge bends to, splits both
+// triangles, turns the spring into a crease and logs the event. Returns the event id.
+Index breakEdge(Sheet& sheet, Index spring, const std::vector<Vec3>& normals, double psi,
+                std::int64_t step);
+
+// §4.2 recovery condition: e_ij is still this event's crease, e_in and e_nj are still
+// breakable, and the four triangles are as the break left them.
+bool canRecover(const Sheet& sheet, Index event);
+
+// Undoes a damage event (a break or a hinge). A break recovery removes n, its four
+// springs, every hinge that uses n or one of those springs, restores the two
+// triangles and makes e_ij breakable again with rest length |X_i - X_j|.
+// Returns false (and changes nothing) when the event cannot be recovered.
+bool recoverEvent(Sheet& sheet, Index event);
+
+// Per-step scratch for the break pass, kept to avoid allocation in the step.
+struct BreakScratch {
+    std::vector<Vec3> normals;
+    std::vector<std::uint8_t> touched; // per triangle: changed this step
+};
+
+// Tests every breakable compressed spring with two faces in index order, drawing one
+// uniform number per candidate from rng, at most one break per triangle per step.
+// Returns the number of breaks.
+int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t step,
+                 BreakScratch& scratch);
+
+} // namespace pf

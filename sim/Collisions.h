@@ -1,0 +1,22 @@
+#pragma once
+
+#include "Sheet.h"
+
+namespace pf {
+
+// The tool the artist pushes with (paper Fig. 13).
+struct SphereTool {
+    Vec3 center{0.0, 1.0, 0.0};
+    Vec3 velocity = Vec3::Zero();
+    double radius = 0.03;
+    bool active = false;
+};
+
+// Vertices inside the sphere are moved to its surface and lose their inward velocity
+// relative to it; `keepTangential` (0..1) is the share of tangential velocity kept.
+void collideSphere(Sheet& sheet, const SphereTool& sphere, double keepTangential);
+
+// Same for the ground plane y = height.
+void collideGround(Sheet& sheet, double height, double keepTangential);
+
+} // namespace pf

@@ -1,0 +1,28 @@
+#include "Integrator.h"
+
+#include "BackwardEulerIntegrator.h"
+#include "JacobiIntegrator.h"
+#include "SymplecticEulerIntegrator.h"
+
+namespace pf {
+
+std::unique_ptr<Integrator> makeIntegrator(std::string_view name) {
+    if (name == "jacobi") return std::make_unique<JacobiIntegrator>(false);
+    if (name == "jacobi-scalar") return std::make_unique<JacobiIntegrator>(true);
+    if (name == "symplectic") return std::make_unique<SymplecticEulerIntegrator>();
+    if (name == "backward-euler") return std::make_unique<BackwardEulerIntegrator>();
+    return nullptr;
+}
+
+const std::vector<std::string>& integratorNames() {
+    static const std::vector<std::string> names{"jacobi", "jacobi-scalar", "symplectic",
+                                                "backward-euler"};
+    return names;
+}
+
+void advancePositions(Sheet& sheet, double h) {
+    auto& V = sheet.verts;
+    for (Index i = 0; i < V.size(); ++i) V.x[i] += h * V.v[i];
+}
+
+} // namespace pf

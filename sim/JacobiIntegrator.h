@@ -1,0 +1,21 @@
+#pragma once
+
+#include "ImplicitSystem.h"
+#include "Integrator.h"
+
+namespace pf {
+
+// The paper's approximate implicit step: Eq. 3 solved by params.iterations Jacobi
+// sweeps after the initial estimate (Eq. 6).
+class JacobiIntegrator final : public Integrator {
+  public:
+    explicit JacobiIntegrator(bool scalarBlocks) : scalar_(scalarBlocks) {}
+    void advance(Sheet& sheet, const SimParams& params) override;
+
+  private:
+    bool scalar_;
+    ImplicitSystem system_;
+    std::vector<Vec3> dv_, scratch_;
+};
+
+} // namespace pf

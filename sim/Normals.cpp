@@ -1,0 +1,18 @@
+#include "Normals.h"
+
+namespace pf {
+
+void computeVertexNormals(const Sheet& sheet, std::vector<Vec3>& normals) {
+    const auto& x = sheet.verts.x;
+    normals.assign(x.size(), Vec3::Zero());
+    for (const Triangle& t : sheet.tris) {
+        const Vec3 n = (x[t.v[1]] - x[t.v[0]]).cross(x[t.v[2]] - x[t.v[0]]);
+        for (Index w : t.v) normals[w] += n;
+    }
+    for (Vec3& n : normals) {
+        const double len = n.norm();
+        n = len > 0.0 ? Vec3(n / len) : Vec3::UnitY();
+    }
+}
+
+} // namespace pf

@@ -1,0 +1,46 @@
+#pragma once
+
+#include "Sheet.h"
+
+#include <array>
+#include <string>
+
+namespace pf {
+
+// Everything that steers a step. Plain data: the editor edits it, files store it.
+struct SimParams {
+    // Paper §4.1 and §5 (defaults: the paper's Fig. 13).
+    double phi = 0.1;   // fragility: scales the normal dot products of Eq. 10
+    double psi = 0.25;  // recursive-break tendency: scales the offset of Eq. 11
+    double sigma = 1.0; // crumple sharpness of the §4.3 subdivision (rendering only)
+
+    double dt = 1.0 / 240.0;
+    int iterations = 1; // Jacobi sweeps after the initial estimate (Eq. 6)
+    std::string integrator = "jacobi";
+
+    // Per spring kind, indexed by SpringKind. Stiffness in N/m, damping in N·s/m.
+    std::array<double, kSpringKindCount> stiffness{100.0, 10.0, 100.0, 10.0};
+    std::array<double, kSpringKindCount> damping{0.02, 0.002, 0.02, 0.002};
+
+    double gravity = 9.81; // m/s^2 along -y
+
+    // Clamp (1 - L/l) at zero in the Jacobian of a compressed spring so that the
+    // system matrix stays positive definite (DESIGN.md reading; see solver-facts.md).
+    bool clampCompressed = true;
+
+    bool breaking = true;
+    bool hinges = true;
+    // A hinge is inserted when |x_r - x_l| falls below this fraction of its rest distance.
+    double hingeThreshold = 0.5;
+    // Eq. 10 is a probability per reference step of this length (DESIGN.md reading).
+    double breakReferenceStep = 1.0 / 60.0;
+
+    // Contact: fraction of tangential velocity removed per step while touching.
+    double groundFriction = 0.6;
+    double sphereFriction = 0.6;
+
+    double stiffnessOf(SpringKind k) const { return stiffness[static_cast<int>(k)]; }
+    double dampingOf(SpringKind k) const { return damping[static_cast<int>(k)]; }
+};
+
+} // namespace pf

@@ -1,0 +1,98 @@
+#include "Scenes.h"
+
+#include "SheetBuilder.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace pf {
+
+namespace {
+
+constexpr int kDefaultResolution = 19; // 494 vertices, as in the paper's Fig. 13
+
+World baseWorld(std::string_view name, const SceneOptions& options, double height) {
+    World w;
+    w.scene = std::string(name);
+    w.seed = options.seed;
+    w.rng.reseed(options.seed);
+    SheetSpec spec = a4Spec(options.resolution > 0 ? options.resolution : kDefaultResolution);
+    spec.height = height;
+    w.sheet = buildRectangleSheet(spec);
+    return w;
+}
+
+Index vertexAt(const SheetSpec& spec, int column, int row) {
+    return row * spec.columns + column;
+}
+
+World pressScene(const SceneOptions& options) {
+    World w = baseWorld("press", options, 0.0);
+    // The sphere comes down near one end and ploughs an S along the long axis,
+    // reaching below the sheet's level so that it catches the paper and shoves it
+    // together ahead of itself (compression is what breaks springs), then lifts off.
+    const double R = 0.04;
+    const double low = R - 0.01;
+    w.sphere.radius = R;
+    w.script.sphereKeys = {{0.0, Vec3(0.03, 0.12, -0.11)},
+                           {0.15, Vec3(0.03, low, -0.11)},
+                           {0.45, Vec3(-0.03, low, -0.02)},
+                           {0.75, Vec3(0.03, low, 0.07)},
+                           {0.95, Vec3(0.03, 0.12, 0.07)}};
+    w.sphere.center = w.script.sphereKeys.front().center;
+    w.sphere.active = true;
+    return w;
+}
+
+World drapeScene(const SceneOptions& options) {
+    World w = baseWorld("drape", options, 0.35);
+    w.params.breaking = false;
+    const SheetSpec spec = a4Spec(options.resolution > 0 ? options.resolution : kDefaultResolution);
+    PinGroup corners;
+    corners.vertices = {vertexAt(spec, 0, 0), vertexAt(spec, spec.columns - 1, 0)};
+    for (Index i : corners.vertices) w.sheet.verts.pinned[i] = 1;
+    w.script.pins.push_back(corners);
+    return w;
+}
+
+World compressScene(const SceneOptions& options) {
+    World w = baseWorld("compress", options, 0.0);
+    const SheetSpec spec = a4Spec(options.resolution > 0 ? options.resolution : kDefaultResolution);
+    // A faint arch seeds the buckling direction so the sheet rises off the ground.
+    for (int r = 0; r < spec.rows; ++r)
+        for (int c = 0; c < spec.columns; ++c)
+            w.sheet.verts.x[vertexAt(spec, c, r)].y() =
+                0.002 * std::sin(std::numbers::pi * r / (spec.rows - 1));
+    // Both short edges move inward at 4 cm/s for 1.5 s: 40 % of the length in total.
+    PinGroup nearEdge, farEdge;
+    nearEdge.velocity = Vec3(0.0, 0.0, 0.04);
+    farEdge.velocity = Vec3(0.0, 0.0, -0.04);
+    nearEdge.until = farEdge.until = 1.5;
+    for (int c = 0; c < spec.columns; ++c) {
+        nearEdge.vertices.push_back(vertexAt(spec, c, 0));
+        farEdge.vertices.push_back(vertexAt(spec, c, spec.rows - 1));
+    }
+    for (const PinGroup* g : {&nearEdge, &farEdge})
+        for (Index i : g->vertices) w.sheet.verts.pinned[i] = 1;
+    w.script.pins = {nearEdge, farEdge};
+    return w;
+}
+
+} // namespace
+
+const std::vector<std::string>& sceneNames() {
+    static const std::vector<std::string> names{"press", "drape", "compress"};
+    return names;
+}
+
+std::optional<World> makeScene(std::string_view name, const SceneOptions& options) {
+    if (options.resolution != 0 &&
+        (options.resolution < kMinResolution || options.resolution > kMaxResolution))
+        return std::nullopt;
+    if (name == "press") return pressScene(options);
+    if (name == "drape") return drapeScene(options);
+    if (name == "compress") return compressScene(options);
+    return std::nullopt;
+}
+
+} // namespace pf

@@ -1,0 +1,52 @@
+#include "SheetStats.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace pf {
+
+double totalMass(const Sheet& sheet) {
+    double m = 0.0;
+    for (double mi : sheet.verts.m) m += mi;
+    return m;
+}
+
+SheetStats computeStats(const Sheet& sheet) {
+    SheetStats st;
+    const auto& S = sheet.springs;
+    const auto& x = sheet.verts.x;
+    st.vertices = sheet.verts.size();
+    st.springs = S.size();
+    st.triangles = sheet.triangleCount();
+    for (const auto& ev : sheet.events) {
+        if (ev.kind != EventKind::Break) continue;
+        (ev.active ? st.breaks : st.recoveries) += 1;
+    }
+    double sum2 = 0.0;
+    Index structural = 0;
+    for (Index s = 0; s < S.size(); ++s) {
+        if (S.kind[s] == SpringKind::Hinge) ++st.hinges;
+        if (S.kind[s] != SpringKind::Structural) continue;
+        const double strain = std::abs((x[S.a[s]] - x[S.b[s]]).norm() / S.rest[s] - 1.0);
+        st.maxStrain = std::max(st.maxStrain, strain);
+        sum2 += strain * strain;
+        ++structural;
+    }
+    st.rmsStrain = structural > 0 ? std::sqrt(sum2 / structural) : 0.0;
+    st.totalMass = totalMass(sheet);
+    return st;
+}
+
+std::uint64_t stateHash(const Sheet& sheet) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    auto mix = [&h](const Vec3& p) {
+        unsigned char bytes[3 * sizeof(double)];
+        std::memcpy(bytes, p.data(), sizeof bytes);
+        for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ULL;
+    };
+    for (const Vec3& p : sheet.verts.x) mix(p);
+    for (const Vec3& p : sheet.verts.v) mix(p);
+    return h;
+}
+
+} // namespace pf

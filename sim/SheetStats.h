@@ -1,0 +1,29 @@
+#pragma once
+
+#include "Sheet.h"
+
+#include <cstdint>
+
+namespace pf {
+
+struct SheetStats {
+    Index vertices = 0;
+    Index springs = 0;
+    Index triangles = 0;
+    Index breaks = 0;     // active break events (creases that exist now)
+    Index recoveries = 0; // break events that were recovered
+    Index hinges = 0;     // hinge springs that exist now
+    double totalMass = 0.0;
+    double maxStrain = 0.0; // max |l/l0 - 1| over structural springs
+    double rmsStrain = 0.0; // RMS of the same
+};
+
+SheetStats computeStats(const Sheet& sheet);
+
+// FNV-1a over the bytes of every position and velocity, in storage order: two
+// states hash equal only if they are bit-identical (up to hash collisions).
+std::uint64_t stateHash(const Sheet& sheet);
+
+double totalMass(const Sheet& sheet);
+
+} // namespace pf

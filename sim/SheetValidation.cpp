@@ -1,0 +1,140 @@
+#include "SheetValidation.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace pf {
+
+namespace {
+
+std::string str(long v) {
+    return std::to_string(v);
+}
+
+bool finite(const Vec3& p) {
+    return p.allFinite();
+}
+
+} // namespace
+
+std::string validateSheet(const Sheet& sheet) {
+    const auto& V = sheet.verts;
+    const auto& S = sheet.springs;
+    const std::size_t nv = V.x.size();
+    if (V.v.size() != nv || V.m.size() != nv || V.X.size() != nv || V.pinned.size() != nv)
+        return "vertex arrays differ in length";
+    const std::size_t ns = S.a.size();
+    if (S.b.size() != ns || S.rest.size() != ns || S.kind.size() != ns ||
+        S.breakable.size() != ns || S.hinged.size() != ns || S.faces.size() != ns ||
+        S.event.size() != ns)
+        return "spring arrays differ in length";
+    if (!(std::isfinite(sheet.density) && sheet.density > 0.0)) return "density is not positive";
+
+    const Index nvi = static_cast<Index>(nv);
+    const Index nt = sheet.triangleCount();
+    const Index ne = static_cast<Index>(sheet.events.size());
+    auto inV = [&](Index i) { return i >= 0 && i < nvi; };
+    auto inS = [&](Index s) { return s >= 0 && s < static_cast<Index>(ns); };
+    auto inT = [&](Index t) { return t >= 0 && t < nt; };
+
+    for (Index i = 0; i < nvi; ++i) {
+        if (!finite(V.x[i]) || !finite(V.v[i]) || !V.X[i].allFinite())
+            return "vertex " + str(i) + " has a non-finite coordinate";
+        if (!(std::isfinite(V.m[i]) && V.m[i] > 0.0))
+            return "vertex " + str(i) + " has a non-positive mass";
+        if (V.pinned[i] > 1) return "vertex " + str(i) + " has an invalid pinned flag";
+    }
+
+    for (Index s = 0; s < static_cast<Index>(ns); ++s) {
+        const std::string at = "spring " + str(s);
+        if (!inV(S.a[s]) || !inV(S.b[s])) return at + " has a vertex out of range";
+        if (S.a[s] == S.b[s]) return at + " joins a vertex to itself";
+        if (static_cast<int>(S.kind[s]) >= kSpringKindCount) return at + " has an unknown kind";
+        if (!(std::isfinite(S.rest[s]) && S.rest[s] > 0.0))
+            return at + " has a non-positive rest length";
+        if (S.breakable[s] > 1 || S.hinged[s] > 1) return at + " has an invalid flag";
+        const bool structural = S.kind[s] == SpringKind::Structural;
+        if (S.breakable[s] && !structural) return at + " is breakable but not structural";
+        for (Index f : S.faces[s]) {
+            if (f == kNone) continue;
+            if (!structural) return at + " has faces but is not a triangle edge";
+            if (!inT(f)) return at + " has a face out of range";
+            if (sheet.edgeSlot(f, S.a[s], S.b[s]) < 0 ||
+                sheet.tris[f].e[sheet.edgeSlot(f, S.a[s], S.b[s])] != s)
+                return at + " lists triangle " + str(f) + " which does not contain it";
+        }
+        if (structural && S.faces[s][0] == kNone && S.faces[s][1] == kNone)
+            return at + " is structural but belongs to no triangle";
+        if (S.faces[s][0] != kNone && S.faces[s][0] == S.faces[s][1])
+            return at + " lists the same triangle twice";
+        if (S.event[s] != kNone && (S.event[s] < 0 || S.event[s] >= ne))
+            return at + " points at a log event out of range";
+        const bool needsEvent = S.kind[s] == SpringKind::Crease || S.kind[s] == SpringKind::Hinge;
+        if (needsEvent != (S.event[s] != kNone))
+            return at + (needsEvent ? " has no log event" : " has a log event but no need of one");
+    }
+
+    std::vector<std::uint8_t> used(nv, 0);
+    for (Index t = 0; t < nt; ++t) {
+        const Triangle& tri = sheet.tris[t];
+        const std::string at = "triangle " + str(t);
+        for (int k = 0; k < 3; ++k) {
+            if (!inV(tri.v[k])) return at + " has a vertex out of range";
+            if (!inS(tri.e[k])) return at + " has an edge out of range";
+        }
+        if (tri.v[0] == tri.v[1] || tri.v[1] == tri.v[2] || tri.v[0] == tri.v[2])
+            return at + " repeats a vertex";
+        for (int k = 0; k < 3; ++k) {
+            const Index e = tri.e[k], p = tri.v[k], q = tri.v[(k + 1) % 3];
+            if (S.kind[e] != SpringKind::Structural) return at + " has a non-structural edge";
+            if (!((S.a[e] == p && S.b[e] == q) || (S.a[e] == q && S.b[e] == p)))
+                return at + " edge " + str(k) + " does not join its vertices";
+            if (S.faces[e][0] != t && S.faces[e][1] != t)
+                return at + " is not listed as a face of its edge " + str(e);
+            used[p] = 1;
+        }
+        const Vec2 a = V.X[tri.v[1]] - V.X[tri.v[0]];
+        const Vec2 b = V.X[tri.v[2]] - V.X[tri.v[0]];
+        if (!(std::abs(a.x() * b.y() - a.y() * b.x()) > 0.0))
+            return at + " is degenerate in material space";
+    }
+    for (Index i = 0; i < nvi; ++i)
+        if (!used[i]) return "vertex " + str(i) + " belongs to no triangle";
+
+    for (Index e = 0; e < ne; ++e) {
+        const DamageEvent& ev = sheet.events[e];
+        if (!ev.active) continue;
+        const std::string at = "log event " + str(e);
+        if (static_cast<int>(ev.kind) > 1) return at + " has an unknown kind";
+        if (!inS(ev.edge)) return at + " has an edge out of range";
+        if (ev.kind == EventKind::Hinge) {
+            if (!inS(ev.springs[0]) || S.kind[ev.springs[0]] != SpringKind::Hinge ||
+                S.event[ev.springs[0]] != e)
+                return at + " does not point at its hinge spring";
+            continue;
+        }
+        if (S.kind[ev.edge] != SpringKind::Crease || S.event[ev.edge] != e)
+            return at + " does not point at its crease spring";
+        if (!inV(ev.vertex)) return at + " has a vertex out of range";
+        for (Index s : ev.springs)
+            if (!inS(s)) return at + " has a spring out of range";
+        for (Index t : ev.tris)
+            if (!inT(t)) return at + " has a triangle out of range";
+        for (const Triangle& t : ev.oldTris)
+            for (int k = 0; k < 3; ++k)
+                if (!inV(t.v[k]) || !inS(t.e[k])) return at + " has a stored triangle out of range";
+        if (!(std::isfinite(ev.massTaken[0]) && std::isfinite(ev.massTaken[1])))
+            return at + " has a non-finite mass";
+    }
+    return {};
+}
+
+long eulerCharacteristic(const Sheet& sheet) {
+    long edges = 0;
+    for (SpringKind k : sheet.springs.kind)
+        if (k == SpringKind::Structural) ++edges;
+    return static_cast<long>(sheet.verts.size()) - edges + static_cast<long>(sheet.tris.size());
+}
+
+} // namespace pf

@@ -1,0 +1,55 @@
+#pragma once
+
+#include "Breaking.h"
+#include "Integrator.h"
+#include "World.h"
+
+#include <memory>
+#include <string>
+
+namespace pf {
+
+enum class StepStatus {
+    Ok,
+    // The integrator produced a non-finite or exploding state; positions and
+    // velocities were put back as they were before the step.
+    Diverged,
+};
+
+// Steps a World. One step, top to bottom:
+//   1. the scene script sets the sphere and the pinned vertices' velocities
+//   2. the integrator updates velocities and positions (Eq. 3-6)
+//   3. sphere and ground collisions
+//   4. divergence check (rolls back x and v on failure)
+//   5. stochastic breaking (Eq. 10-11)
+//   6. hinge insertion (§3)
+//   7. the clock advances
+class Simulation {
+  public:
+    explicit Simulation(World world);
+
+    // Fails (returns false and keeps the old integrator) for an unknown name.
+    bool setIntegrator(const std::string& name);
+
+    StepStatus step();
+
+    World& world() { return world_; }
+    const World& world() const { return world_; }
+
+    int lastBreaks() const { return lastBreaks_; }
+    int lastHinges() const { return lastHinges_; }
+
+  private:
+    World world_;
+    std::unique_ptr<Integrator> integrator_;
+    std::string integratorName_;
+    BreakScratch breakScratch_;
+    std::vector<Vec3> savedX_, savedV_;
+    int lastBreaks_ = 0;
+    int lastHinges_ = 0;
+};
+
+// Positions far beyond this distance from the origin (metres) count as a blow-up.
+inline constexpr double kDivergenceRadius = 1.0e3;
+
+} // namespace pf

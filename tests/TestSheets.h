@@ -1,0 +1,20 @@
+#pragma once
+
+#include "Sheet.h"
+
+namespace pf::test {
+
+// Two triangles (i, r, j) and (i, j, l) sharing edge i-j, ids i=0, j=1, r=2, l=3,
+// with 5 structural springs (edge i-j is spring 0) and the bending spring r-l.
+// Material coordinates: i=(-0.5, 0), j=(0.5, 0), r=(0, 0.5), l=(0, -0.5), so l0 = 1.
+// Positions: i=(-0.4, 0, 0), j=(0.4, 0, 0), r=(0, 0.3, 0.4), l=(0, 0.3, -0.4):
+// the edge is compressed to l = 0.8 and folded into a valley with face normals
+// (0, 0.8, -0.6) and (0, 0.8, 0.6), so n_i = n_j = (0, 1, 0).
+Sheet makeFoldedQuad();
+
+// A flat sheet with rows × columns vertices whose positions are jittered
+// out of plane and in plane (deterministically from seed), so that every
+// interior edge is a valid break candidate with two faces.
+Sheet makeJitteredSheet(int columns, int rows, unsigned seed);
+
+} // namespace pf::test

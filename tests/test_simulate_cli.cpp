@@ -1,0 +1,105 @@
+// `paperfold simulate`: the JSON contract and the handling of bad input.
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QtTest>
+
+namespace {
+
+struct Result {
+    int exitCode;
+    QByteArray out, err;
+};
+
+Result runPaperfold(const QStringList& args) {
+    QProcess p;
+    p.start(QStringLiteral(PAPERFOLD_EXE), args);
+    if (!p.waitForFinished(120000)) return {-1, {}, "timeout"};
+    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2, p.readAllStandardOutput(),
+            p.readAllStandardError()};
+}
+
+} // namespace
+
+class TestSimulateCli : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void statsJsonHasEveryKey() {
+        const Result r = runPaperfold({"simulate", "--scene", "press", "--steps", "300", "--seed",
+                                       "3", "--phi", "0.1", "--psi", "0.25", "--stats"});
+        QCOMPARE(r.exitCode, 0);
+        QJsonParseError error;
+        const QJsonObject o = QJsonDocument::fromJson(r.out, &error).object();
+        QCOMPARE(error.error, QJsonParseError::NoError);
+        for (const char* key : {"vertices", "springs", "triangles", "breaks", "recoveries",
+                                "hinges", "total_mass", "max_strain", "rms_strain", "state_hash",
+                                "sim_time", "wall_seconds", "steps_per_second"})
+            QVERIFY2(o.contains(QLatin1String(key)), key);
+        QVERIFY(o[QStringLiteral("vertices")].toInt() >= 494);
+        QVERIFY(std::abs(o[QStringLiteral("total_mass")].toDouble() - 0.080 * 0.210 * 0.297) <
+                1e-12);
+        QVERIFY(std::abs(o[QStringLiteral("sim_time")].toDouble() - 300.0 / 240.0) < 1e-9);
+        QCOMPARE(o[QStringLiteral("state_hash")].toString().size(), 16);
+    }
+
+    void sameArgumentsSameHash() {
+        const QStringList args{"simulate", "--scene", "compress", "--steps", "200", "--stats"};
+        const auto a = QJsonDocument::fromJson(runPaperfold(args).out).object();
+        const auto b = QJsonDocument::fromJson(runPaperfold(args).out).object();
+        QCOMPARE(a[QStringLiteral("state_hash")], b[QStringLiteral("state_hash")]);
+    }
+
+    void optionsReachTheSimulation() {
+        const auto o =
+            QJsonDocument::fromJson(
+                runPaperfold({"simulate", "--scene", "drape", "--steps", "10", "--integrator",
+                              "backward-euler", "--dt", "0.002", "--resolution", "7", "--stats"})
+                    .out)
+                .object();
+        QCOMPARE(o[QStringLiteral("integrator")].toString(), QStringLiteral("backward-euler"));
+        // 7 along the short side; the long side keeps the A4 ratio: round(6·297/210) + 1 = 9.
+        QCOMPARE(o[QStringLiteral("vertices")].toInt(), 7 * 9);
+        QVERIFY(std::abs(o[QStringLiteral("sim_time")].toDouble() - 0.02) < 1e-12);
+    }
+
+    void badInputGivesOneLineErrorAndNonZeroExit_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("mentions");
+        QTest::newRow("unknown scene") << QStringList{"simulate", "--scene", "nope"} << "nope";
+        QTest::newRow("phi out of range") << QStringList{"simulate", "--phi", "1.5"} << "phi";
+        QTest::newRow("psi not a number") << QStringList{"simulate", "--psi", "abc"} << "psi";
+        QTest::newRow("negative steps") << QStringList{"simulate", "--steps", "-4"} << "steps";
+        QTest::newRow("nan dt") << QStringList{"simulate", "--dt", "nan"} << "dt";
+        QTest::newRow("zero dt") << QStringList{"simulate", "--dt", "0"} << "dt";
+        QTest::newRow("huge resolution")
+            << QStringList{"simulate", "--resolution", "100000"} << "resolution";
+        QTest::newRow("unknown integrator")
+            << QStringList{"simulate", "--integrator", "rk4"} << "rk4";
+        QTest::newRow("unknown option") << QStringList{"simulate", "--frobnicate"} << "frobnicate";
+        QTest::newRow("unknown command") << QStringList{"fly"} << "fly";
+        QTest::newRow("stray argument") << QStringList{"simulate", "extra"} << "extra";
+    }
+    void badInputGivesOneLineErrorAndNonZeroExit() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, mentions);
+        const Result r = runPaperfold(args);
+        QVERIFY(r.exitCode > 0);
+        const QString err = QString::fromUtf8(r.err).trimmed();
+        QVERIFY2(!err.isEmpty() && !err.contains(QLatin1Char('\n')), qPrintable(err));
+        QVERIFY2(err.contains(mentions), qPrintable(err));
+        QVERIFY(r.out.isEmpty());
+    }
+
+    void divergenceIsReportedNotCrashed() {
+        const Result r = runPaperfold({"simulate", "--scene", "drape", "--integrator", "symplectic",
+                                       "--dt", "0.05", "--steps", "2000", "--stats"});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY(QString::fromUtf8(r.err).contains(QStringLiteral("diverged")));
+        const auto o = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(o[QStringLiteral("diverged")].toBool(), true);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSimulateCli)
+#include "test_simulate_cli.moc"
