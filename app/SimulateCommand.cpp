@@ -1,25 +1,19 @@
 #include "SimulateCommand.h"
 
 #include "CommandLine.h"
-#include "Scenes.h"
+#include "SheetFile.h"
 #include "SheetStats.h"
 #include "Simulation.h"
+#include "WorldOptions.h"
 
 #include <QElapsedTimer>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTextStream>
-#include <cstdio>
 
 namespace pf::cli {
 
 namespace {
-
-QString joined(const std::vector<std::string>& names) {
-    QStringList list;
-    for (const auto& n : names) list << QString::fromStdString(n);
-    return list.join(QStringLiteral(", "));
-}
 
 QJsonObject statsJson(const Simulation& sim, double wallSeconds, long long steps) {
     const World& w = sim.world();
@@ -53,28 +47,16 @@ QJsonObject statsJson(const Simulation& sim, double wallSeconds, long long steps
 
 int runSimulate(const QStringList& arguments) {
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Run a scene headless and report statistics."));
+    parser.setApplicationDescription(
+        QStringLiteral("Run a scene or a saved sheet headless and report statistics."));
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("simulate"), QStringLiteral("The subcommand."));
+    addWorldOptions(parser);
     parser.addOptions({
-        {QStringLiteral("scene"), QStringLiteral("Scene: %1.").arg(joined(sceneNames())),
-         QStringLiteral("name"), QStringLiteral("press")},
         {QStringLiteral("steps"), QStringLiteral("Number of steps (default 600)."),
          QStringLiteral("n")},
-        {QStringLiteral("seed"), QStringLiteral("Random seed (default 1)."), QStringLiteral("s")},
-        {QStringLiteral("phi"), QStringLiteral("Fragility φ in [0, 1]."), QStringLiteral("f")},
-        {QStringLiteral("psi"), QStringLiteral("Recursive-break tendency ψ in [0, 1]."),
-         QStringLiteral("f")},
-        {QStringLiteral("integrator"),
-         QStringLiteral("Integrator: %1.").arg(joined(integratorNames())), QStringLiteral("name")},
-        {QStringLiteral("iterations"), QStringLiteral("Jacobi sweeps after the first estimate."),
-         QStringLiteral("k")},
-        {QStringLiteral("dt"), QStringLiteral("Time step in seconds."), QStringLiteral("h")},
-        {QStringLiteral("resolution"),
-         QStringLiteral("Vertices along the short side (%1-%2).")
-             .arg(kMinResolution)
-             .arg(kMaxResolution),
-         QStringLiteral("n")},
+        {QStringLiteral("save"), QStringLiteral("Save the sheet to a .paper file afterwards."),
+         QStringLiteral("file")},
         {QStringLiteral("stats"), QStringLiteral("Print statistics as one JSON object.")},
     });
     if (!parser.parse(arguments)) throw UsageError{parser.errorText()};
@@ -83,35 +65,11 @@ int runSimulate(const QStringList& arguments) {
         return 0;
     }
     rejectExtraArguments(parser, 1);
-
-    SceneOptions sceneOptions;
-    if (auto r =
-            integerOption(parser, QStringLiteral("resolution"), kMinResolution, kMaxResolution))
-        sceneOptions.resolution = static_cast<int>(*r);
-    if (auto s = seedOption(parser, QStringLiteral("seed"))) sceneOptions.seed = *s;
-    const QString sceneName = parser.value(QStringLiteral("scene"));
-    std::optional<World> world = makeScene(sceneName.toStdString(), sceneOptions);
-    if (!world)
-        throw UsageError{
-            QStringLiteral("unknown scene '%1' (known: %2)").arg(sceneName, joined(sceneNames()))};
-
-    SimParams& p = world->params;
-    if (auto v = realOption(parser, QStringLiteral("phi"), 0.0, 1.0)) p.phi = *v;
-    if (auto v = realOption(parser, QStringLiteral("psi"), 0.0, 1.0)) p.psi = *v;
-    if (auto v = realOption(parser, QStringLiteral("dt"), 1e-7, 0.1)) p.dt = *v;
-    if (auto v = integerOption(parser, QStringLiteral("iterations"), 0, 1000))
-        p.iterations = static_cast<int>(*v);
-    if (parser.isSet(QStringLiteral("integrator"))) {
-        const QString name = parser.value(QStringLiteral("integrator"));
-        if (!makeIntegrator(name.toStdString()))
-            throw UsageError{QStringLiteral("unknown integrator '%1' (known: %2)")
-                                 .arg(name, joined(integratorNames()))};
-        p.integrator = name.toStdString();
-    }
+    World world = worldFromOptions(parser);
     const long long steps =
         integerOption(parser, QStringLiteral("steps"), 0, 1'000'000'000).value_or(600);
 
-    Simulation sim(std::move(*world));
+    Simulation sim(std::move(world));
     QElapsedTimer timer;
     timer.start();
     long long done = 0;
@@ -124,13 +82,21 @@ int runSimulate(const QStringList& arguments) {
     }
     const double wall = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
 
+    QTextStream err(stderr);
+    if (parser.isSet(QStringLiteral("save"))) {
+        QString error;
+        if (!saveWorld(sim.world(), parser.value(QStringLiteral("save")), &error)) {
+            err << "paperfold: " << error << '\n';
+            return 2;
+        }
+    }
     QJsonObject stats = statsJson(sim, wall, done);
     stats[QStringLiteral("diverged")] = diverged;
     if (parser.isSet(QStringLiteral("stats"))) {
         QTextStream(stdout) << QJsonDocument(stats).toJson(QJsonDocument::Compact) << '\n';
     } else {
         QTextStream(stdout) << QStringLiteral("%1: %2 steps, %3 breaks, %4 hinges, %5 steps/s\n")
-                                   .arg(sceneName)
+                                   .arg(stats[QStringLiteral("scene")].toString())
                                    .arg(done)
                                    .arg(stats[QStringLiteral("breaks")].toInt())
                                    .arg(stats[QStringLiteral("hinges")].toInt())
@@ -138,9 +104,9 @@ int runSimulate(const QStringList& arguments) {
                                         'f', 0);
     }
     if (diverged) {
-        QTextStream(stderr)
-            << QStringLiteral("paperfold: the simulation diverged at step %1 (non-finite or "
-                              "exploding state); try a smaller --dt or an implicit integrator\n")
+        err << QStringLiteral("paperfold: the simulation diverged at step %1 (non-finite or "
+                              "exploding state); the last good state was kept; try a smaller "
+                              "--dt or an implicit integrator\n")
                    .arg(done + 1);
         return 3;
     }

@@ -1,4 +1,5 @@
 #include "CommandLine.h"
+#include "ExportCommand.h"
 #include "SimulateCommand.h"
 
 #include <QCoreApplication>
@@ -10,7 +11,10 @@ void printUsage(QTextStream& out) {
     out << "usage: paperfold <command> [options]\n"
            "\n"
            "commands:\n"
-           "  simulate   run a scene headless and report statistics (--help for options)\n"
+           "  simulate   run a scene or a saved sheet headless; report statistics, save\n"
+           "  export     write the subdivided surface as .obj, .ply or .glb\n"
+           "\n"
+           "paperfold <command> --help lists a command's options.\n"
            "\n"
            "The desktop editor is not built yet; see README.md.\n";
 }
@@ -29,6 +33,7 @@ int main(int argc, char* argv[]) {
     }
     try {
         if (args[1] == QLatin1String("simulate")) return pf::cli::runSimulate(args);
+        if (args[1] == QLatin1String("export")) return pf::cli::runExport(args);
         throw pf::cli::UsageError{QStringLiteral("unknown command '%1'").arg(args[1])};
     } catch (const pf::cli::UsageError& e) {
         err << "paperfold: " << e.message << '\n';

@@ -124,6 +124,24 @@ std::string validateSheet(const Sheet& sheet) {
         for (const Triangle& t : ev.oldTris)
             for (int k = 0; k < 3; ++k)
                 if (!inV(t.v[k]) || !inS(t.e[k])) return at + " has a stored triangle out of range";
+        // What recovery will rely on: the springs join i-n, n-j, r-n, n-l, and each
+        // stored triangle holds the crease's two ends and the edge itself.
+        const Index i = S.a[ev.edge], j = S.b[ev.edge], n = ev.vertex;
+        auto joins = [&](Index s, Index p, Index q) {
+            return (S.a[s] == p && S.b[s] == q) || (S.a[s] == q && S.b[s] == p);
+        };
+        if (n == i || n == j || !joins(ev.springs[0], i, n) || !joins(ev.springs[1], n, j) ||
+            !(S.a[ev.springs[2]] == n || S.b[ev.springs[2]] == n) ||
+            !(S.a[ev.springs[3]] == n || S.b[ev.springs[3]] == n))
+            return at + " has springs that do not meet at its vertex";
+        for (const Triangle& t : ev.oldTris) {
+            int ends = 0, hasEdge = 0;
+            for (int k = 0; k < 3; ++k) {
+                ends += t.v[k] == i || t.v[k] == j;
+                hasEdge += t.e[k] == ev.edge;
+            }
+            if (ends != 2 || hasEdge != 1) return at + " has a stored triangle without its edge";
+        }
         if (!(std::isfinite(ev.massTaken[0]) && std::isfinite(ev.massTaken[1])))
             return at + " has a non-finite mass";
     }

@@ -2,6 +2,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QTemporaryDir>
 #include <QtTest>
 
 namespace {
@@ -89,6 +90,64 @@ class TestSimulateCli : public QObject {
         QVERIFY2(!err.isEmpty() && !err.contains(QLatin1Char('\n')), qPrintable(err));
         QVERIFY2(err.contains(mentions), qPrintable(err));
         QVERIFY(r.out.isEmpty());
+    }
+
+    void saveThenLoadResumesExactly() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("half.paper"));
+        const Result first =
+            runPaperfold({"simulate", "--scene", "press", "--steps", "300", "--save", path});
+        QCOMPARE(first.exitCode, 0);
+        const auto resumed =
+            QJsonDocument::fromJson(
+                runPaperfold({"simulate", "--load", path, "--steps", "300", "--stats"}).out)
+                .object();
+        const auto whole =
+            QJsonDocument::fromJson(
+                runPaperfold({"simulate", "--scene", "press", "--steps", "600", "--stats"}).out)
+                .object();
+        QVERIFY(whole[QStringLiteral("breaks")].toInt() > 0);
+        QCOMPARE(resumed[QStringLiteral("state_hash")], whole[QStringLiteral("state_hash")]);
+        QCOMPARE(resumed[QStringLiteral("sim_time")], whole[QStringLiteral("sim_time")]);
+    }
+
+    void loadingABadFileGivesOneLineError() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("bad.paper"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QByteArray::fromHex("a1656d61676963") + "bad"); // {"magic": <truncated>
+        f.close();
+        const Result r = runPaperfold({"simulate", "--load", path, "--steps", "5"});
+        QCOMPARE(r.exitCode, 1);
+        const QString err = QString::fromUtf8(r.err).trimmed();
+        QVERIFY2(err.contains(QStringLiteral("bad.paper")) && !err.contains(QLatin1Char('\n')),
+                 qPrintable(err));
+        QCOMPARE(runPaperfold({"simulate", "--load", path, "--scene", "press"}).exitCode, 1);
+        QCOMPARE(runPaperfold({"simulate", "--load", path, "--seed", "4"}).exitCode, 1);
+    }
+
+    void exportWritesEachFormat() {
+        QTemporaryDir dir;
+        const QString sheet = dir.filePath(QStringLiteral("s.paper"));
+        QCOMPARE(runPaperfold({"simulate", "--scene", "press", "--steps", "100", "--save", sheet})
+                     .exitCode,
+                 0);
+        for (const char* ext : {"obj", "ply", "glb"}) {
+            const QString out = dir.filePath(QStringLiteral("s.") + QLatin1String(ext));
+            const Result r = runPaperfold(
+                {"export", "--load", sheet, "--output", out, "--subdiv", "1", "--sigma", "0.5"});
+            QCOMPARE(r.exitCode, 0);
+            QVERIFY(QFileInfo(out).size() > 1000);
+        }
+        const Result bad = runPaperfold({"export", "--load", sheet, "--output", "x.stl"});
+        QCOMPARE(bad.exitCode, 1);
+        QVERIFY(QString::fromUtf8(bad.err).contains(QStringLiteral(".obj")));
+        QCOMPARE(runPaperfold({"export", "--load", sheet}).exitCode, 1); // no --output
+        QCOMPARE(runPaperfold({"export", "--load", sheet, "--output", dir.filePath("a.obj"),
+                               "--subdiv", "9"})
+                     .exitCode,
+                 1);
     }
 
     void divergenceIsReportedNotCrashed() {

@@ -1,0 +1,94 @@
+#include "WorldOptions.h"
+
+#include "CommandLine.h"
+#include "Integrator.h"
+#include "Scenes.h"
+#include "SheetFile.h"
+
+#include <QStringList>
+
+namespace pf::cli {
+
+namespace {
+
+QString joined(const std::vector<std::string>& names) {
+    QStringList list;
+    for (const auto& n : names) list << QString::fromStdString(n);
+    return list.join(QStringLiteral(", "));
+}
+
+} // namespace
+
+void addWorldOptions(QCommandLineParser& parser) {
+    parser.addOptions({
+        {QStringLiteral("scene"),
+         QStringLiteral("Start from a scene: %1.").arg(joined(sceneNames())),
+         QStringLiteral("name")},
+        {QStringLiteral("load"), QStringLiteral("Start from a saved .paper sheet."),
+         QStringLiteral("file")},
+        {QStringLiteral("seed"), QStringLiteral("Random seed of a new scene (default 1)."),
+         QStringLiteral("s")},
+        {QStringLiteral("resolution"),
+         QStringLiteral("Vertices along a new scene's short side (%1-%2).")
+             .arg(kMinResolution)
+             .arg(kMaxResolution),
+         QStringLiteral("n")},
+        {QStringLiteral("phi"), QStringLiteral("Fragility φ in [0, 1]."), QStringLiteral("f")},
+        {QStringLiteral("psi"), QStringLiteral("Recursive-break tendency ψ in [0, 1]."),
+         QStringLiteral("f")},
+        {QStringLiteral("sigma"), QStringLiteral("Crumple sharpness σ in [0, 4] (rendering)."),
+         QStringLiteral("f")},
+        {QStringLiteral("integrator"),
+         QStringLiteral("Integrator: %1.").arg(joined(integratorNames())), QStringLiteral("name")},
+        {QStringLiteral("iterations"), QStringLiteral("Jacobi sweeps after the first estimate."),
+         QStringLiteral("k")},
+        {QStringLiteral("dt"), QStringLiteral("Time step in seconds."), QStringLiteral("h")},
+    });
+}
+
+World worldFromOptions(const QCommandLineParser& parser) {
+    const bool load = parser.isSet(QStringLiteral("load"));
+    if (load && parser.isSet(QStringLiteral("scene")))
+        throw UsageError{QStringLiteral("--scene and --load exclude each other")};
+    std::optional<World> world;
+    if (load) {
+        for (const char* sceneOnly : {"seed", "resolution"})
+            if (parser.isSet(QLatin1String(sceneOnly)))
+                throw UsageError{QStringLiteral("--%1 applies to a new --scene, not to --load")
+                                     .arg(QLatin1String(sceneOnly))};
+        WorldLoad loaded = loadWorld(parser.value(QStringLiteral("load")));
+        if (!loaded.world) throw UsageError{loaded.error};
+        world = std::move(loaded.world);
+    } else {
+        SceneOptions options;
+        if (auto r =
+                integerOption(parser, QStringLiteral("resolution"), kMinResolution, kMaxResolution))
+            options.resolution = static_cast<int>(*r);
+        if (auto s = seedOption(parser, QStringLiteral("seed"))) options.seed = *s;
+        const QString name = parser.isSet(QStringLiteral("scene"))
+                                 ? parser.value(QStringLiteral("scene"))
+                                 : QStringLiteral("press");
+        world = makeScene(name.toStdString(), options);
+        if (!world)
+            throw UsageError{
+                QStringLiteral("unknown scene '%1' (known: %2)").arg(name, joined(sceneNames()))};
+    }
+
+    SimParams& p = world->params;
+    if (auto v = realOption(parser, QStringLiteral("phi"), 0.0, 1.0)) p.phi = *v;
+    if (auto v = realOption(parser, QStringLiteral("psi"), 0.0, 1.0)) p.psi = *v;
+    if (auto v = realOption(parser, QStringLiteral("sigma"), 0.0, 4.0)) p.sigma = *v;
+    if (auto v = realOption(parser, QStringLiteral("dt"), 1e-7, 0.1)) p.dt = *v;
+    if (auto v = integerOption(parser, QStringLiteral("iterations"), 0, 1000))
+        p.iterations = static_cast<int>(*v);
+    if (parser.isSet(QStringLiteral("integrator"))) {
+        const QString name = parser.value(QStringLiteral("integrator"));
+        if (!makeIntegrator(name.toStdString()))
+            throw UsageError{QStringLiteral("unknown integrator '%1' (known: %2)")
+                                 .arg(name, joined(integratorNames()))};
+        p.integrator = name.toStdString();
+    }
+    return std::move(*world);
+}
+
+} // namespace pf::cli

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "Sheet.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace pf {
+
+// Paper §4.3: the internal point of edge (i, j) on the Hermite curve through x_i, x_j
+// whose end tangents are σ(x_j - x_i) projected onto the tangent planes of n_i, n_j:
+//   m = (x_i + x_j)/2 + (C'(0) - C'(1))/8.
+// The expression is symmetric in (i, j) to the last bit (it only uses sums, exact
+// negations and commutative products), so neighbouring triangles share midpoints.
+Vec3 hermiteMidpoint(const Vec3& xi, const Vec3& xj, const Vec3& ni, const Vec3& nj, double sigma);
+
+// The normal carried to an internal point: the normalised mean of the end normals.
+Vec3 midpointNormal(const Vec3& ni, const Vec3& nj);
+
+// An indexed triangle surface with one normal per vertex.
+struct SurfaceMesh {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+inline constexpr int kMaxSubdivisionLevel = 4;
+
+// Subdivides every simulation triangle `levels` times (0..kMaxSubdivisionLevel),
+// each time splitting it into four at the Hermite midpoints of its edges. A
+// midpoint is made once per edge and shared by both triangles, so the surface
+// has no cracks. Vertex normals start as the sheet's area-weighted normals.
+SurfaceMesh subdivideSheet(const Sheet& sheet, double sigma, int levels);
+
+} // namespace pf

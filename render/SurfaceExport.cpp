@@ -1,0 +1,204 @@
+#include "SurfaceExport.h"
+
+#include <QSaveFile>
+#include <QtEndian>
+#include <cstring>
+#include <sstream>
+#include <tiny_gltf.h>
+
+namespace pf {
+
+namespace {
+
+QByteArray objBytes(const SurfaceMesh& mesh, bool withNormals) {
+    QByteArray out;
+    out.reserve(static_cast<qsizetype>(mesh.positions.size() * 80 + mesh.triangles.size() * 40));
+    out += "# PaperFold sheet surface (Kang & Cho 4.3 subdivision), metres, y up\n";
+    char line[128];
+    for (const Vec3& p : mesh.positions) {
+        std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
+        out += line;
+    }
+    if (withNormals)
+        for (const Vec3& n : mesh.normals) {
+            std::snprintf(line, sizeof line, "vn %.6f %.6f %.6f\n", n.x(), n.y(), n.z());
+            out += line;
+        }
+    for (const auto& t : mesh.triangles) {
+        if (withNormals)
+            std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", t[0] + 1, t[0] + 1,
+                          t[1] + 1, t[1] + 1, t[2] + 1, t[2] + 1);
+        else
+            std::snprintf(line, sizeof line, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
+        out += line;
+    }
+    return out;
+}
+
+template <class T> void appendLE(QByteArray& out, T v) {
+    const T le = qToLittleEndian(v);
+    out.append(reinterpret_cast<const char*>(&le), sizeof le);
+}
+
+QByteArray plyBytes(const SurfaceMesh& mesh, bool withNormals) {
+    QByteArray out;
+    out += "ply\nformat binary_little_endian 1.0\ncomment PaperFold sheet surface, metres, y up\n";
+    out += "element vertex " + QByteArray::number(static_cast<qulonglong>(mesh.positions.size())) +
+           "\n";
+    out += "property float x\nproperty float y\nproperty float z\n";
+    if (withNormals) out += "property float nx\nproperty float ny\nproperty float nz\n";
+    out +=
+        "element face " + QByteArray::number(static_cast<qulonglong>(mesh.triangles.size())) + "\n";
+    out += "property list uchar uint vertex_indices\nend_header\n";
+    auto putFloat = [&out](double d) {
+        quint32 bits;
+        const float f = static_cast<float>(d);
+        std::memcpy(&bits, &f, 4);
+        appendLE(out, bits);
+    };
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        for (int k = 0; k < 3; ++k) putFloat(mesh.positions[i][k]);
+        if (withNormals)
+            for (int k = 0; k < 3; ++k) putFloat(mesh.normals[i][k]);
+    }
+    for (const auto& t : mesh.triangles) {
+        out.append(char(3));
+        for (std::uint32_t v : t) appendLE(out, static_cast<quint32>(v));
+    }
+    return out;
+}
+
+int addView(tinygltf::Model& model, std::vector<unsigned char>& data, const void* bytes,
+            std::size_t size, int target) {
+    while (data.size() % 4) data.push_back(0);
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = data.size();
+    view.byteLength = size;
+    view.target = target;
+    const auto* p = static_cast<const unsigned char*>(bytes);
+    data.insert(data.end(), p, p + size);
+    model.bufferViews.push_back(view);
+    return static_cast<int>(model.bufferViews.size()) - 1;
+}
+
+int addAccessor(tinygltf::Model& model, int view, int componentType, int type, std::size_t count) {
+    tinygltf::Accessor a;
+    a.bufferView = view;
+    a.componentType = componentType;
+    a.type = type;
+    a.count = count;
+    model.accessors.push_back(a);
+    return static_cast<int>(model.accessors.size()) - 1;
+}
+
+QByteArray glbBytes(const SurfaceMesh& mesh, bool withNormals, QString* error) {
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "PaperFold";
+    model.buffers.emplace_back();
+    std::vector<unsigned char>& data = model.buffers[0].data;
+
+    std::vector<float> positions, normals;
+    std::vector<std::uint32_t> indices;
+    std::vector<double> lo(3, std::numeric_limits<double>::infinity()), hi(3, -lo[0]);
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const float f = static_cast<float>(mesh.positions[i][k]);
+            positions.push_back(f);
+            lo[k] = std::min<double>(lo[k], f);
+            hi[k] = std::max<double>(hi[k], f);
+            normals.push_back(static_cast<float>(mesh.normals[i][k]));
+        }
+    for (const auto& t : mesh.triangles) indices.insert(indices.end(), t.begin(), t.end());
+
+    tinygltf::Primitive prim;
+    prim.mode = TINYGLTF_MODE_TRIANGLES;
+    const int pv =
+        addView(model, data, positions.data(), positions.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER);
+    prim.attributes["POSITION"] = addAccessor(model, pv, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                              TINYGLTF_TYPE_VEC3, mesh.positions.size());
+    model.accessors.back().minValues = lo; // required for POSITION by the glTF spec
+    model.accessors.back().maxValues = hi;
+    if (withNormals) {
+        const int nv =
+            addView(model, data, normals.data(), normals.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER);
+        prim.attributes["NORMAL"] = addAccessor(model, nv, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                                TINYGLTF_TYPE_VEC3, mesh.positions.size());
+    }
+    const int iv = addView(model, data, indices.data(), indices.size() * 4,
+                           TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    prim.indices = addAccessor(model, iv, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                               TINYGLTF_TYPE_SCALAR, indices.size());
+
+    tinygltf::Material paper;
+    paper.name = "paper";
+    paper.doubleSided = true; // a sheet is seen from both sides
+    paper.pbrMetallicRoughness.baseColorFactor = {0.93, 0.92, 0.88, 1.0};
+    paper.pbrMetallicRoughness.metallicFactor = 0.0;
+    paper.pbrMetallicRoughness.roughnessFactor = 0.9;
+    model.materials.push_back(paper);
+    prim.material = 0;
+
+    tinygltf::Mesh m;
+    m.name = "sheet";
+    m.primitives.push_back(prim);
+    model.meshes.push_back(m);
+    tinygltf::Node node;
+    node.mesh = 0;
+    node.name = "sheet";
+    model.nodes.push_back(node);
+    tinygltf::Scene scene;
+    scene.nodes.push_back(0);
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+
+    std::ostringstream stream;
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToStream(&model, stream, false, true)) {
+        if (error) *error = QStringLiteral("the glTF writer failed");
+        return {};
+    }
+    const std::string s = stream.str();
+    return QByteArray(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+} // namespace
+
+bool meshFormatForPath(const QString& path, MeshFormat* format) {
+    const QString lower = path.toLower();
+    if (lower.endsWith(QLatin1String(".obj")))
+        *format = MeshFormat::Obj;
+    else if (lower.endsWith(QLatin1String(".ply")))
+        *format = MeshFormat::Ply;
+    else if (lower.endsWith(QLatin1String(".glb")))
+        *format = MeshFormat::Glb;
+    else
+        return false;
+    return true;
+}
+
+bool writeSurface(const SurfaceMesh& mesh, const QString& path, MeshFormat format, bool withNormals,
+                  QString* error) {
+    QByteArray bytes;
+    switch (format) {
+    case MeshFormat::Obj:
+        bytes = objBytes(mesh, withNormals);
+        break;
+    case MeshFormat::Ply:
+        bytes = plyBytes(mesh, withNormals);
+        break;
+    case MeshFormat::Glb:
+        bytes = glbBytes(mesh, withNormals, error);
+        if (bytes.isEmpty()) return false;
+        break;
+    }
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+        if (error) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+} // namespace pf

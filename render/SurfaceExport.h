@@ -1,0 +1,19 @@
+#pragma once
+
+#include "Subdivision.h"
+
+#include <QString>
+
+namespace pf {
+
+enum class MeshFormat { Obj, Ply, Glb };
+
+// The format named by a file's extension (.obj, .ply, .glb), if any.
+bool meshFormatForPath(const QString& path, MeshFormat* format);
+
+// Writes the surface atomically (the old file survives a failed write). Positions
+// in metres, y up: what Blender's OBJ, PLY and glTF importers expect.
+bool writeSurface(const SurfaceMesh& mesh, const QString& path, MeshFormat format, bool withNormals,
+                  QString* error);
+
+} // namespace pf

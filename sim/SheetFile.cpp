@@ -1,0 +1,552 @@
+#include "SheetFile.h"
+
+#include "Integrator.h"
+#include "SheetValidation.h"
+
+#include <QCborArray>
+#include <QCborMap>
+#include <QCborValue>
+#include <QFile>
+#include <QSaveFile>
+#include <QtEndian>
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+namespace pf {
+
+namespace {
+
+// ---------------------------------------------------------------- packing
+// Bulk arrays are CBOR byte strings of little-endian numbers: exact, compact, and
+// their length can be checked against the declared count before anything is built.
+
+void putI32(QByteArray& out, std::int32_t v) {
+    const auto le = qToLittleEndian(static_cast<quint32>(v));
+    out.append(reinterpret_cast<const char*>(&le), 4);
+}
+void putI64(QByteArray& out, std::int64_t v) {
+    const auto le = qToLittleEndian(static_cast<quint64>(v));
+    out.append(reinterpret_cast<const char*>(&le), 8);
+}
+void putF64(QByteArray& out, double v) {
+    putI64(out, std::bit_cast<std::int64_t>(v));
+}
+void putVec3(QByteArray& out, const Vec3& v) {
+    for (int k = 0; k < 3; ++k) putF64(out, v[k]);
+}
+
+// Reads sequentially from a byte string whose size has already been checked.
+// Holds its own reference to the bytes (implicitly shared, no copy), so it can
+// never outlive them.
+class Unpacker {
+  public:
+    explicit Unpacker(QByteArray b) : bytes_(std::move(b)), p_(bytes_.constData()) {}
+    std::int32_t i32() {
+        quint32 v;
+        std::memcpy(&v, p_, 4);
+        p_ += 4;
+        return static_cast<std::int32_t>(qFromLittleEndian(v));
+    }
+    std::int64_t i64() {
+        quint64 v;
+        std::memcpy(&v, p_, 8);
+        p_ += 8;
+        return static_cast<std::int64_t>(qFromLittleEndian(v));
+    }
+    double f64() { return std::bit_cast<double>(i64()); }
+    Vec3 vec3() {
+        Vec3 v;
+        for (int k = 0; k < 3; ++k) v[k] = f64();
+        return v;
+    }
+    std::uint8_t u8() { return static_cast<std::uint8_t>(*p_++); }
+
+  private:
+    QByteArray bytes_;
+    const char* p_;
+};
+
+constexpr qint64 kEventRecordBytes = 4 + 4 + 8 + 4 + 4 + 16 + 16 + 2 * 24 + 4 * 24 + 16;
+
+void putTriangle(QByteArray& out, const Triangle& t) {
+    for (Index v : t.v) putI32(out, v);
+    for (Index e : t.e) putI32(out, e);
+}
+Triangle takeTriangle(Unpacker& u) {
+    Triangle t;
+    for (Index& v : t.v) v = u.i32();
+    for (Index& e : t.e) e = u.i32();
+    return t;
+}
+
+QByteArray packEvents(const std::vector<DamageEvent>& events) {
+    QByteArray out;
+    out.reserve(static_cast<qsizetype>(events.size() * kEventRecordBytes));
+    for (const DamageEvent& ev : events) {
+        putI32(out, static_cast<std::int32_t>(ev.kind));
+        putI32(out, ev.active ? 1 : 0);
+        putI64(out, ev.step);
+        putI32(out, ev.edge);
+        putI32(out, ev.vertex);
+        for (Index s : ev.springs) putI32(out, s);
+        for (Index t : ev.tris) putI32(out, t);
+        for (const Triangle& t : ev.oldTris) putTriangle(out, t);
+        for (const Triangle& t : ev.newTris) putTriangle(out, t);
+        putF64(out, ev.massTaken[0]);
+        putF64(out, ev.massTaken[1]);
+    }
+    return out;
+}
+
+QCborMap paramsToCbor(const SimParams& p) {
+    QCborMap m;
+    m[QLatin1String("phi")] = p.phi;
+    m[QLatin1String("psi")] = p.psi;
+    m[QLatin1String("sigma")] = p.sigma;
+    m[QLatin1String("dt")] = p.dt;
+    m[QLatin1String("iterations")] = p.iterations;
+    m[QLatin1String("integrator")] = QString::fromStdString(p.integrator);
+    QCborArray k, c;
+    for (int i = 0; i < kSpringKindCount; ++i) {
+        k.append(p.stiffness[i]);
+        c.append(p.damping[i]);
+    }
+    m[QLatin1String("stiffness")] = k;
+    m[QLatin1String("damping")] = c;
+    m[QLatin1String("gravity")] = p.gravity;
+    m[QLatin1String("clampCompressed")] = p.clampCompressed;
+    m[QLatin1String("breaking")] = p.breaking;
+    m[QLatin1String("hinges")] = p.hinges;
+    m[QLatin1String("hingeThreshold")] = p.hingeThreshold;
+    m[QLatin1String("breakReferenceStep")] = p.breakReferenceStep;
+    m[QLatin1String("groundFriction")] = p.groundFriction;
+    m[QLatin1String("sphereFriction")] = p.sphereFriction;
+    return m;
+}
+
+QCborMap sheetToCbor(const Sheet& s) {
+    QByteArray x, v, m, X, pinned, a, b, rest, kind, breakable, hinged, faces, event, tv, te;
+    for (Index i = 0; i < s.verts.size(); ++i) {
+        putVec3(x, s.verts.x[i]);
+        putVec3(v, s.verts.v[i]);
+        putF64(m, s.verts.m[i]);
+        putF64(X, s.verts.X[i].x());
+        putF64(X, s.verts.X[i].y());
+        pinned.append(static_cast<char>(s.verts.pinned[i]));
+    }
+    const Springs& S = s.springs;
+    for (Index i = 0; i < S.size(); ++i) {
+        putI32(a, S.a[i]);
+        putI32(b, S.b[i]);
+        putF64(rest, S.rest[i]);
+        kind.append(static_cast<char>(S.kind[i]));
+        breakable.append(static_cast<char>(S.breakable[i]));
+        hinged.append(static_cast<char>(S.hinged[i]));
+        putI32(faces, S.faces[i][0]);
+        putI32(faces, S.faces[i][1]);
+        putI32(event, S.event[i]);
+    }
+    for (const Triangle& t : s.tris) {
+        for (Index w : t.v) putI32(tv, w);
+        for (Index e : t.e) putI32(te, e);
+    }
+    QCborMap o;
+    o[QLatin1String("density")] = s.density;
+    o[QLatin1String("vertexCount")] = s.verts.size();
+    o[QLatin1String("springCount")] = S.size();
+    o[QLatin1String("triangleCount")] = s.triangleCount();
+    o[QLatin1String("eventCount")] = static_cast<qint64>(s.events.size());
+    o[QLatin1String("x")] = x;
+    o[QLatin1String("v")] = v;
+    o[QLatin1String("m")] = m;
+    o[QLatin1String("X")] = X;
+    o[QLatin1String("pinned")] = pinned;
+    o[QLatin1String("springA")] = a;
+    o[QLatin1String("springB")] = b;
+    o[QLatin1String("rest")] = rest;
+    o[QLatin1String("kind")] = kind;
+    o[QLatin1String("breakable")] = breakable;
+    o[QLatin1String("hinged")] = hinged;
+    o[QLatin1String("faces")] = faces;
+    o[QLatin1String("springEvent")] = event;
+    o[QLatin1String("triangleVertices")] = tv;
+    o[QLatin1String("triangleEdges")] = te;
+    o[QLatin1String("events")] = packEvents(s.events);
+    return o;
+}
+
+// ---------------------------------------------------------------- reading
+
+// Thrown inside the decoder only; decodeWorld turns it into WorldLoad::error.
+struct FormatError {
+    QString message;
+};
+
+[[noreturn]] void fail(const QString& message) {
+    throw FormatError{message};
+}
+
+QCborMap mapAt(const QCborMap& m, const char* key, const QString& where) {
+    const QCborValue v = m.value(QLatin1String(key));
+    if (!v.isMap()) fail(QStringLiteral("%1.%2: missing or not a map").arg(where, key));
+    return v.toMap();
+}
+
+double realAt(const QCborMap& m, const char* key, const QString& where, double min, double max) {
+    const QCborValue v = m.value(QLatin1String(key));
+    if (!v.isDouble() && !v.isInteger())
+        fail(QStringLiteral("%1.%2: missing or not a number").arg(where, key));
+    const double d = v.toDouble();
+    if (!std::isfinite(d) || d < min || d > max)
+        fail(QStringLiteral("%1.%2: %3 is outside [%4, %5]")
+                 .arg(where, key)
+                 .arg(d)
+                 .arg(min)
+                 .arg(max));
+    return d;
+}
+
+qint64 integerAt(const QCborMap& m, const char* key, const QString& where, qint64 min, qint64 max) {
+    const QCborValue v = m.value(QLatin1String(key));
+    if (!v.isInteger()) fail(QStringLiteral("%1.%2: missing or not an integer").arg(where, key));
+    const qint64 i = v.toInteger();
+    if (i < min || i > max)
+        fail(QStringLiteral("%1.%2: %3 is outside [%4, %5]")
+                 .arg(where, key)
+                 .arg(i)
+                 .arg(min)
+                 .arg(max));
+    return i;
+}
+
+bool boolAt(const QCborMap& m, const char* key, const QString& where) {
+    const QCborValue v = m.value(QLatin1String(key));
+    if (!v.isBool()) fail(QStringLiteral("%1.%2: missing or not a boolean").arg(where, key));
+    return v.toBool();
+}
+
+QString textAt(const QCborMap& m, const char* key, const QString& where, qsizetype maxLength) {
+    const QCborValue v = m.value(QLatin1String(key));
+    if (!v.isString()) fail(QStringLiteral("%1.%2: missing or not text").arg(where, key));
+    const QString s = v.toString();
+    if (s.size() > maxLength) fail(QStringLiteral("%1.%2: text too long").arg(where, key));
+    return s;
+}
+
+// A byte string of exactly count * elementBytes bytes.
+QByteArray bytesAt(const QCborMap& m, const char* key, const QString& where, qint64 count,
+                   qint64 elementBytes) {
+    const QCborValue v = m.value(QLatin1String(key));
+    if (!v.isByteArray())
+        fail(QStringLiteral("%1.%2: missing or not a byte string").arg(where, key));
+    const QByteArray b = v.toByteArray();
+    if (b.size() != count * elementBytes)
+        fail(QStringLiteral("%1.%2: %3 bytes where %4 elements need %5")
+                 .arg(where, key)
+                 .arg(b.size())
+                 .arg(count)
+                 .arg(count * elementBytes));
+    return b;
+}
+
+SimParams paramsFromCbor(const QCborMap& m) {
+    const QString w = QStringLiteral("params");
+    SimParams p;
+    p.phi = realAt(m, "phi", w, 0.0, 1.0);
+    p.psi = realAt(m, "psi", w, 0.0, 1.0);
+    p.sigma = realAt(m, "sigma", w, 0.0, 4.0);
+    p.dt = realAt(m, "dt", w, 1e-7, 0.1);
+    p.iterations = static_cast<int>(integerAt(m, "iterations", w, 0, 1000));
+    p.integrator = textAt(m, "integrator", w, 64).toStdString();
+    if (!makeIntegrator(p.integrator))
+        fail(QStringLiteral("params.integrator: unknown integrator '%1'")
+                 .arg(QString::fromStdString(p.integrator)));
+    for (const char* key : {"stiffness", "damping"}) {
+        const QCborValue v = m.value(QLatin1String(key));
+        if (!v.isArray() || v.toArray().size() != kSpringKindCount)
+            fail(QStringLiteral("params.%1: not an array of %2 numbers")
+                     .arg(key)
+                     .arg(kSpringKindCount));
+        const QCborArray arr = v.toArray();
+        for (int i = 0; i < kSpringKindCount; ++i) {
+            const double d = arr.at(i).toDouble(-1.0);
+            if (!(arr.at(i).isDouble() || arr.at(i).isInteger()) || !std::isfinite(d) || d < 0.0 ||
+                d > 1e9)
+                fail(QStringLiteral("params.%1[%2]: not a number in [0, 1e9]").arg(key).arg(i));
+            (key[0] == 's' ? p.stiffness : p.damping)[i] = d;
+        }
+    }
+    p.gravity = realAt(m, "gravity", w, -1e3, 1e3);
+    p.clampCompressed = boolAt(m, "clampCompressed", w);
+    p.breaking = boolAt(m, "breaking", w);
+    p.hinges = boolAt(m, "hinges", w);
+    p.hingeThreshold = realAt(m, "hingeThreshold", w, 0.0, 10.0);
+    p.breakReferenceStep = realAt(m, "breakReferenceStep", w, 1e-6, 10.0);
+    p.groundFriction = realAt(m, "groundFriction", w, 0.0, 1.0);
+    p.sphereFriction = realAt(m, "sphereFriction", w, 0.0, 1.0);
+    return p;
+}
+
+Sheet sheetFromCbor(const QCborMap& m) {
+    const QString w = QStringLiteral("sheet");
+    Sheet s;
+    s.density = realAt(m, "density", w, 1e-9, 1e9);
+    const qint64 nv = integerAt(m, "vertexCount", w, 3, kMaxFileVertices);
+    const qint64 ns = integerAt(m, "springCount", w, 3, kMaxFileSprings);
+    const qint64 nt = integerAt(m, "triangleCount", w, 1, kMaxFileTriangles);
+    const qint64 ne = integerAt(m, "eventCount", w, 0, kMaxFileEvents);
+
+    // Every size is checked before any array is filled.
+    const QByteArray x = bytesAt(m, "x", w, nv, 24), v = bytesAt(m, "v", w, nv, 24);
+    const QByteArray mass = bytesAt(m, "m", w, nv, 8), X = bytesAt(m, "X", w, nv, 16);
+    const QByteArray pinned = bytesAt(m, "pinned", w, nv, 1);
+    const QByteArray a = bytesAt(m, "springA", w, ns, 4), b = bytesAt(m, "springB", w, ns, 4);
+    const QByteArray rest = bytesAt(m, "rest", w, ns, 8), kind = bytesAt(m, "kind", w, ns, 1);
+    const QByteArray breakable = bytesAt(m, "breakable", w, ns, 1);
+    const QByteArray hinged = bytesAt(m, "hinged", w, ns, 1);
+    const QByteArray faces = bytesAt(m, "faces", w, ns, 8);
+    const QByteArray event = bytesAt(m, "springEvent", w, ns, 4);
+    const QByteArray tv = bytesAt(m, "triangleVertices", w, nt, 12);
+    const QByteArray te = bytesAt(m, "triangleEdges", w, nt, 12);
+    const QByteArray events = bytesAt(m, "events", w, ne, kEventRecordBytes);
+
+    Unpacker ux(x), uv(v), um(mass), uX(X), up(pinned);
+    for (qint64 i = 0; i < nv; ++i) {
+        const Vec3 p = ux.vec3(), vel = uv.vec3();
+        const double mi = um.f64();
+        const double X0 = uX.f64(), X1 = uX.f64();
+        const Index id = s.addVertex(p, vel, mi, Vec2(X0, X1));
+        s.verts.pinned[id] = up.u8();
+    }
+    Unpacker ua(a), ub(b), ur(rest), uk(kind), ubr(breakable), uh(hinged), uf(faces), ue(event);
+    for (qint64 i = 0; i < ns; ++i) {
+        const Index sa = ua.i32(), sb = ub.i32();
+        const double r = ur.f64();
+        const std::uint8_t k = uk.u8();
+        if (k >= kSpringKindCount)
+            fail(QStringLiteral("sheet.kind[%1]: unknown spring kind %2").arg(i).arg(k));
+        const Index id = s.addSpring(sa, sb, r, static_cast<SpringKind>(k), false);
+        s.springs.breakable[id] = ubr.u8();
+        s.springs.hinged[id] = uh.u8();
+        s.springs.faces[id][0] = uf.i32();
+        s.springs.faces[id][1] = uf.i32();
+        s.springs.event[id] = ue.i32();
+    }
+    Unpacker utv(tv), ute(te);
+    s.tris.resize(static_cast<std::size_t>(nt));
+    for (Triangle& t : s.tris) {
+        for (Index& id : t.v) id = utv.i32();
+        for (Index& id : t.e) id = ute.i32();
+    }
+    Unpacker uev(events);
+    s.events.resize(static_cast<std::size_t>(ne));
+    for (DamageEvent& ev : s.events) {
+        const std::int32_t k = uev.i32(), active = uev.i32();
+        if (k != 0 && k != 1) fail(QStringLiteral("sheet.events: unknown event kind %1").arg(k));
+        if (active != 0 && active != 1) fail(QStringLiteral("sheet.events: invalid active flag"));
+        ev.kind = static_cast<EventKind>(k);
+        ev.active = active == 1;
+        ev.step = uev.i64();
+        ev.edge = uev.i32();
+        ev.vertex = uev.i32();
+        for (Index& id : ev.springs) id = uev.i32();
+        for (Index& id : ev.tris) id = uev.i32();
+        for (Triangle& t : ev.oldTris) t = takeTriangle(uev);
+        for (Triangle& t : ev.newTris) t = takeTriangle(uev);
+        ev.massTaken[0] = uev.f64();
+        ev.massTaken[1] = uev.f64();
+    }
+    const std::string problem = validateSheet(s);
+    if (!problem.empty()) fail(QStringLiteral("sheet: %1").arg(QString::fromStdString(problem)));
+    return s;
+}
+
+std::uint64_t u64From(const QByteArray& b, qsizetype offset) {
+    quint64 v;
+    std::memcpy(&v, b.constData() + offset, 8);
+    return qFromLittleEndian(v);
+}
+
+World worldFromCbor(const QCborMap& root) {
+    const QString w = QStringLiteral("file");
+    if (textAt(root, "magic", w, 64) != QLatin1String(kSheetFileMagic))
+        fail(QStringLiteral("not a PaperFold sheet (wrong magic)"));
+    const qint64 version = integerAt(root, "version", w, 0, 1'000'000);
+    if (version != kSheetFileVersion)
+        fail(QStringLiteral("unsupported sheet file version %1 (this build reads version %2)")
+                 .arg(version)
+                 .arg(kSheetFileVersion));
+
+    World world;
+    world.scene = textAt(root, "scene", w, 256).toStdString();
+    world.seed = u64From(bytesAt(root, "seed", w, 1, 8), 0);
+    const QByteArray rng = bytesAt(root, "rng", w, 4, 8);
+    Rng::State state;
+    for (int k = 0; k < 4; ++k) state[k] = u64From(rng, 8 * k);
+    if (!world.rng.setState(state)) fail(QStringLiteral("file.rng: the all-zero state is invalid"));
+    world.time = realAt(root, "time", w, 0.0, 1e12);
+    world.stepCount = integerAt(root, "step", w, 0, std::numeric_limits<qint64>::max());
+    world.params = paramsFromCbor(mapAt(root, "params", w));
+
+    const QCborMap sphere = mapAt(root, "sphere", w);
+    const QString ws = QStringLiteral("sphere");
+    Unpacker uc(bytesAt(sphere, "center", ws, 1, 24)), uv(bytesAt(sphere, "velocity", ws, 1, 24));
+    world.sphere.center = uc.vec3();
+    world.sphere.velocity = uv.vec3();
+    if (!world.sphere.center.allFinite() || !world.sphere.velocity.allFinite())
+        fail(QStringLiteral("sphere: non-finite position or velocity"));
+    world.sphere.radius = realAt(sphere, "radius", ws, 1e-6, 100.0);
+    world.sphere.active = boolAt(sphere, "active", ws);
+
+    const QCborMap ground = mapAt(root, "ground", w);
+    world.groundEnabled = boolAt(ground, "enabled", QStringLiteral("ground"));
+    world.groundHeight = realAt(ground, "height", QStringLiteral("ground"), -1e3, 1e3);
+
+    world.sheet = sheetFromCbor(mapAt(root, "sheet", w));
+    const Index nv = world.sheet.verts.size();
+
+    const QCborMap script = mapAt(root, "script", w);
+    const QString wsc = QStringLiteral("script");
+    const QCborValue keysValue = script.value(QLatin1String("sphereKeys"));
+    if (!keysValue.isByteArray() || keysValue.toByteArray().size() % 32 != 0 ||
+        keysValue.toByteArray().size() > 32 * 100000)
+        fail(QStringLiteral("script.sphereKeys: not a byte string of (t, x, y, z) records"));
+    const QByteArray keys = keysValue.toByteArray();
+    Unpacker uk(keys);
+    double lastTime = -std::numeric_limits<double>::infinity();
+    for (qsizetype k = 0; k < keys.size() / 32; ++k) {
+        SphereKey key;
+        key.time = uk.f64();
+        key.center = uk.vec3();
+        if (!std::isfinite(key.time) || !key.center.allFinite() || key.time < lastTime)
+            fail(QStringLiteral("script.sphereKeys[%1]: non-finite or out of order").arg(k));
+        lastTime = key.time;
+        world.script.sphereKeys.push_back(key);
+    }
+    const QCborValue pins = script.value(QLatin1String("pins"));
+    if (!pins.isArray() || pins.toArray().size() > 1000)
+        fail(QStringLiteral("script.pins: not an array of at most 1000 groups"));
+    for (const QCborValue& g : pins.toArray()) {
+        if (!g.isMap()) fail(QStringLiteral("script.pins: a group is not a map"));
+        const QCborMap gm = g.toMap();
+        const QCborValue ids = gm.value(QLatin1String("vertices"));
+        if (!ids.isByteArray() || ids.toByteArray().size() % 4 != 0 ||
+            ids.toByteArray().size() / 4 > nv)
+            fail(QStringLiteral("script.pins.vertices: not a byte string of vertex ids"));
+        PinGroup group;
+        const QByteArray idBytes = ids.toByteArray();
+        Unpacker ui(idBytes);
+        for (qsizetype k = 0; k < idBytes.size() / 4; ++k) {
+            const Index id = ui.i32();
+            if (id < 0 || id >= nv)
+                fail(QStringLiteral("script.pins.vertices: vertex %1 out of range").arg(id));
+            group.vertices.push_back(id);
+        }
+        Unpacker uvel(bytesAt(gm, "velocity", wsc, 1, 24));
+        group.velocity = uvel.vec3();
+        if (!group.velocity.allFinite()) fail(QStringLiteral("script.pins.velocity: not finite"));
+        group.until = realAt(gm, "until", wsc, -1e12, 1e12);
+        world.script.pins.push_back(std::move(group));
+    }
+    return world;
+}
+
+} // namespace
+
+QByteArray encodeWorld(const World& world) {
+    QCborMap root;
+    root[QLatin1String("magic")] = QLatin1String(kSheetFileMagic);
+    root[QLatin1String("version")] = kSheetFileVersion;
+    root[QLatin1String("scene")] = QString::fromStdString(world.scene);
+    QByteArray seed, rng;
+    putI64(seed, static_cast<std::int64_t>(world.seed));
+    for (std::uint64_t word : world.rng.state()) putI64(rng, static_cast<std::int64_t>(word));
+    root[QLatin1String("seed")] = seed;
+    root[QLatin1String("rng")] = rng;
+    root[QLatin1String("time")] = world.time;
+    root[QLatin1String("step")] = static_cast<qint64>(world.stepCount);
+    root[QLatin1String("params")] = paramsToCbor(world.params);
+
+    QCborMap sphere;
+    QByteArray center, velocity;
+    putVec3(center, world.sphere.center);
+    putVec3(velocity, world.sphere.velocity);
+    sphere[QLatin1String("center")] = center;
+    sphere[QLatin1String("velocity")] = velocity;
+    sphere[QLatin1String("radius")] = world.sphere.radius;
+    sphere[QLatin1String("active")] = world.sphere.active;
+    root[QLatin1String("sphere")] = sphere;
+
+    QCborMap ground;
+    ground[QLatin1String("enabled")] = world.groundEnabled;
+    ground[QLatin1String("height")] = world.groundHeight;
+    root[QLatin1String("ground")] = ground;
+
+    QCborMap script;
+    QByteArray keys;
+    for (const SphereKey& k : world.script.sphereKeys) {
+        putF64(keys, k.time);
+        putVec3(keys, k.center);
+    }
+    script[QLatin1String("sphereKeys")] = keys;
+    QCborArray pins;
+    for (const PinGroup& g : world.script.pins) {
+        QCborMap gm;
+        QByteArray ids, vel;
+        for (Index i : g.vertices) putI32(ids, i);
+        putVec3(vel, g.velocity);
+        gm[QLatin1String("vertices")] = ids;
+        gm[QLatin1String("velocity")] = vel;
+        gm[QLatin1String("until")] = g.until;
+        pins.append(gm);
+    }
+    script[QLatin1String("pins")] = pins;
+    root[QLatin1String("script")] = script;
+    root[QLatin1String("sheet")] = sheetToCbor(world.sheet);
+    return root.toCborValue().toCbor();
+}
+
+WorldLoad decodeWorld(const QByteArray& bytes) {
+    QCborParserError parseError;
+    const QCborValue root = QCborValue::fromCbor(bytes, &parseError);
+    if (parseError.error != QCborError::NoError)
+        return {std::nullopt, QStringLiteral("not a valid CBOR file at byte %1: %2")
+                                  .arg(parseError.offset)
+                                  .arg(parseError.errorString())};
+    if (!root.isMap())
+        return {std::nullopt, QStringLiteral("not a PaperFold sheet (no top-level map)")};
+    try {
+        return {worldFromCbor(root.toMap()), {}};
+    } catch (const FormatError& e) {
+        return {std::nullopt, e.message};
+    }
+}
+
+bool saveWorld(const World& world, const QString& path, QString* error) {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        if (error) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    const QByteArray bytes = encodeWorld(world);
+    if (file.write(bytes) != bytes.size() || !file.commit()) {
+        if (error) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+WorldLoad loadWorld(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {std::nullopt, QStringLiteral("cannot open %1: %2").arg(path, file.errorString())};
+    if (file.size() > kMaxSheetFileBytes)
+        return {std::nullopt,
+                QStringLiteral("%1 is larger than %2 MiB").arg(path).arg(kMaxSheetFileBytes >> 20)};
+    WorldLoad load = decodeWorld(file.read(kMaxSheetFileBytes + 1));
+    if (!load.world) load.error = QStringLiteral("%1: %2").arg(path, load.error);
+    return load;
+}
+
+} // namespace pf
