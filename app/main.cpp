@@ -1,9 +1,16 @@
 #include "CommandLine.h"
 #include "ExportCommand.h"
+#include "RenderCommand.h"
 #include "SimulateCommand.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
 #include <QTextStream>
+#include <cerrno>
+#include <memory>
+#include <string_view>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace {
 
@@ -13,6 +20,7 @@ void printUsage(QTextStream& out) {
            "commands:\n"
            "  simulate   run a scene or a saved sheet headless; report statistics, save\n"
            "  export     write the subdivided surface as .obj, .ply or .glb\n"
+           "  render     render PNG stills or image sequences with no display (OSMesa)\n"
            "\n"
            "paperfold <command> --help lists a command's options.\n"
            "\n"
@@ -22,7 +30,18 @@ void printUsage(QTextStream& out) {
 } // namespace
 
 int main(int argc, char* argv[]) {
-    QCoreApplication app(argc, argv);
+    // Rendering draws legends with fonts, which need a GUI application; the
+    // offscreen platform gives one with no display at all.
+    const bool gui = argc >= 2 && std::string_view(argv[1]) == "render";
+    if (gui && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (gui && qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+        // The folder Qt would fall back to, made up front so it does not warn on stderr.
+        const QByteArray dir = "/tmp/runtime-" + QByteArray::number(getuid());
+        if (mkdir(dir.constData(), 0700) == 0 || errno == EEXIST) qputenv("XDG_RUNTIME_DIR", dir);
+    }
+    std::unique_ptr<QCoreApplication> app = gui ? std::make_unique<QGuiApplication>(argc, argv)
+                                                : std::make_unique<QCoreApplication>(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("paperfold"));
     QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_STRING));
     const QStringList args = QCoreApplication::arguments();
@@ -34,6 +53,7 @@ int main(int argc, char* argv[]) {
     try {
         if (args[1] == QLatin1String("simulate")) return pf::cli::runSimulate(args);
         if (args[1] == QLatin1String("export")) return pf::cli::runExport(args);
+        if (args[1] == QLatin1String("render")) return pf::cli::runRender(args);
         throw pf::cli::UsageError{QStringLiteral("unknown command '%1'").arg(args[1])};
     } catch (const pf::cli::UsageError& e) {
         err << "paperfold: " << e.message << '\n';

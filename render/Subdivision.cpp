@@ -22,12 +22,18 @@ Vec3 midpointNormal(const Vec3& ni, const Vec3& nj) {
 }
 
 SurfaceMesh subdivideSheet(const Sheet& sheet, double sigma, int levels) {
+    return subdivide(sheet.verts.x, sheet.tris, nullptr, sigma, levels);
+}
+
+SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& tris,
+                      const std::vector<float>* scalars, double sigma, int levels) {
     levels = std::clamp(levels, 0, kMaxSubdivisionLevel);
     SurfaceMesh mesh;
-    mesh.positions = sheet.verts.x;
-    computeVertexNormals(sheet, mesh.normals);
-    mesh.triangles.reserve(sheet.tris.size());
-    for (const Triangle& t : sheet.tris)
+    mesh.positions = x;
+    computeVertexNormals(x, tris, mesh.normals);
+    if (scalars) mesh.scalars = *scalars;
+    mesh.triangles.reserve(tris.size());
+    for (const Triangle& t : tris)
         mesh.triangles.push_back({static_cast<std::uint32_t>(t.v[0]),
                                   static_cast<std::uint32_t>(t.v[1]),
                                   static_cast<std::uint32_t>(t.v[2])});
@@ -50,6 +56,8 @@ SurfaceMesh subdivideSheet(const Sheet& sheet, double sigma, int levels) {
                 const Vec3 n = midpointNormal(mesh.normals[a], mesh.normals[b]);
                 mesh.positions.push_back(p);
                 mesh.normals.push_back(n);
+                if (!mesh.scalars.empty())
+                    mesh.scalars.push_back(0.5f * (mesh.scalars[a] + mesh.scalars[b]));
             }
             return it->second;
         };

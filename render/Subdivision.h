@@ -22,6 +22,7 @@ Vec3 midpointNormal(const Vec3& ni, const Vec3& nj);
 struct SurfaceMesh {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
+    std::vector<float> scalars; // optional per-vertex value (a heat map), averaged at midpoints
     std::vector<std::array<std::uint32_t, 3>> triangles;
 };
 
@@ -31,6 +32,9 @@ inline constexpr int kMaxSubdivisionLevel = 4;
 // each time splitting it into four at the Hermite midpoints of its edges. A
 // midpoint is made once per edge and shared by both triangles, so the surface
 // has no cracks. Vertex normals start as the sheet's area-weighted normals.
+// `scalars`, if not null, holds one value per vertex carried to the subdivided surface.
+SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& tris,
+                      const std::vector<float>* scalars, double sigma, int levels);
 SurfaceMesh subdivideSheet(const Sheet& sheet, double sigma, int levels);
 
 } // namespace pf

@@ -3,9 +3,13 @@
 namespace pf {
 
 void computeVertexNormals(const Sheet& sheet, std::vector<Vec3>& normals) {
-    const auto& x = sheet.verts.x;
+    computeVertexNormals(sheet.verts.x, sheet.tris, normals);
+}
+
+void computeVertexNormals(const std::vector<Vec3>& x, const std::vector<Triangle>& tris,
+                          std::vector<Vec3>& normals) {
     normals.assign(x.size(), Vec3::Zero());
-    for (const Triangle& t : sheet.tris) {
+    for (const Triangle& t : tris) {
         const Vec3 n = (x[t.v[1]] - x[t.v[0]]).cross(x[t.v[2]] - x[t.v[0]]);
         for (Index w : t.v) normals[w] += n;
     }

@@ -1,4 +1,6 @@
 // `paperfold simulate`: the JSON contract and the handling of bad input.
+#include <QDir>
+#include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -12,8 +14,16 @@ struct Result {
     QByteArray out, err;
 };
 
-Result runPaperfold(const QStringList& args) {
+Result runPaperfold(const QStringList& args, bool noDisplay = false) {
     QProcess p;
+    if (noDisplay) {
+        // Prove the headless path needs no X server and no Qt platform setting.
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove(QStringLiteral("DISPLAY"));
+        env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+        env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+        p.setProcessEnvironment(env);
+    }
     p.start(QStringLiteral(PAPERFOLD_EXE), args);
     if (!p.waitForFinished(120000)) return {-1, {}, "timeout"};
     return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2, p.readAllStandardOutput(),
@@ -148,6 +158,92 @@ class TestSimulateCli : public QObject {
                                "--subdiv", "9"})
                      .exitCode,
                  1);
+    }
+
+    void renderWritesAPngWithNoDisplay() {
+        QTemporaryDir dir;
+        const QString out = dir.filePath(QStringLiteral("shot.png"));
+        const Result r =
+            runPaperfold({"render", "--scene", "press", "--steps", "120", "--size", "320x200",
+                          "--view", "top", "--overlay", "springs,breaks", "--output", out},
+                         true);
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QImage image(out);
+        QCOMPARE(image.size(), QSize(320, 200));
+        QVERIFY(QString::fromUtf8(r.out).contains(QStringLiteral("llvmpipe")));
+    }
+
+    void renderWritesAnImageSequence() {
+        QTemporaryDir dir;
+        const Result r = runPaperfold({"render", "--scene", "compress", "--size", "160x120",
+                                       "--frames", "5", "--every", "10", "--output",
+                                       dir.filePath(QStringLiteral("frame_%04d.png"))},
+                                      true);
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QStringList frames = QDir(dir.path()).entryList({QStringLiteral("frame_*.png")});
+        QCOMPARE(frames, QStringList({"frame_0000.png", "frame_0001.png", "frame_0002.png",
+                                      "frame_0003.png", "frame_0004.png"}));
+        QVERIFY(QString::fromUtf8(r.err).contains(QStringLiteral("frame 5/5")));
+        QVERIFY(QImage(dir.filePath(QStringLiteral("frame_0000.png"))) !=
+                QImage(dir.filePath(QStringLiteral("frame_0004.png"))));
+    }
+
+    void renderComparesWithAReference() {
+        QTemporaryDir dir;
+        const QString base = dir.filePath(QStringLiteral("base.png"));
+        const QStringList shot{"render", "--scene", "press", "--steps", "100", "--size", "240x160"};
+        QCOMPARE(runPaperfold(shot + QStringList{"--output", base}, true).exitCode, 0);
+        // The same picture matches.
+        const Result same = runPaperfold(
+            shot + QStringList{"--output", dir.filePath("same.png"), "--reference", base}, true);
+        QCOMPARE(same.exitCode, 0);
+        QVERIFY(QString::fromUtf8(same.out).contains(QStringLiteral("0.000 %")));
+        // Another view does not: exit 4 and a difference image next to the output.
+        const Result other =
+            runPaperfold(shot + QStringList{"--view", "top", "--output", dir.filePath("other.png"),
+                                            "--reference", base},
+                         true);
+        QCOMPARE(other.exitCode, 4);
+        QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("other.diff.png"))));
+    }
+
+    void renderRejectsBadValues_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("mentions");
+        QTest::newRow("no output") << QStringList{"render"} << "--output";
+        QTest::newRow("bad size") << QStringList{"render", "--size", "10x10", "--output", "a.png"}
+                                  << "size";
+        QTest::newRow("size garbage")
+            << QStringList{"render", "--size", "big", "--output", "a.png"} << "size";
+        QTest::newRow("bad view") << QStringList{"render", "--view", "side", "--output", "a.png"}
+                                  << "side";
+        QTest::newRow("bad camera")
+            << QStringList{"render", "--camera", "1,95,1", "--output", "a.png"} << "camera";
+        QTest::newRow("bad overlay")
+            << QStringList{"render", "--overlay", "springs,glitter", "--output", "a.png"}
+            << "glitter";
+        QTest::newRow("bad subdiv")
+            << QStringList{"render", "--subdiv", "7", "--output", "a.png"} << "subdiv";
+        QTest::newRow("sequence without pattern")
+            << QStringList{"render", "--frames", "3", "--output", "a.png"} << "pattern";
+        QTest::newRow("missing folder")
+            << QStringList{"render", "--output", "/nonexistent/dir/a.png"} << "folder";
+        QTest::newRow("unreadable reference") << QStringList{"render",
+                                                             "--size",
+                                                             "64x64",
+                                                             "--output",
+                                                             "/tmp/pf-ref-test.png",
+                                                             "--reference",
+                                                             "/nonexistent.png"}
+                                              << "reference";
+    }
+    void renderRejectsBadValues() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, mentions);
+        const Result r = runPaperfold(args, true);
+        QVERIFY(r.exitCode > 0);
+        const QString err = QString::fromUtf8(r.err).trimmed();
+        QVERIFY2(err.contains(mentions), qPrintable(err));
     }
 
     void divergenceIsReportedNotCrashed() {

@@ -1,0 +1,236 @@
+#include "RenderCommand.h"
+
+#include "CommandLine.h"
+#include "ImageCompare.h"
+#include "OffscreenRenderer.h"
+#include "SheetSnapshot.h"
+#include "Simulation.h"
+#include "WorldOptions.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QTextStream>
+#include <cstdio>
+#include <unistd.h>
+
+namespace pf::cli {
+
+namespace {
+
+// Camera framing the sheet: the named view (or explicit angles) around the
+// snapshot's bounding sphere.
+OrbitCamera frameCamera(const SheetSnapshot& snap, const QCommandLineParser& parser,
+                        double aspect) {
+    Vec3 lo = snap.x.front(), hi = lo;
+    for (const Vec3& p : snap.x) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    const Vec3 center = 0.5 * (lo + hi);
+    const double radius = std::max(0.5 * (hi - lo).norm(), 0.05);
+    const QString viewName = parser.value(QStringLiteral("view"));
+    std::optional<OrbitCamera> named = namedView(viewName.toStdString());
+    if (!named)
+        throw UsageError{
+            QStringLiteral("--view: unknown view '%1' (known: top, front, iso)").arg(viewName)};
+    OrbitCamera camera = *named;
+    camera.fit(center, radius, aspect);
+    if (parser.isSet(QStringLiteral("camera"))) {
+        const QStringList parts = parser.value(QStringLiteral("camera")).split(QLatin1Char(','));
+        bool ok[3] = {false, false, false};
+        if (parts.size() == 3) {
+            camera.yaw = parts[0].toDouble(&ok[0]);
+            camera.pitch = parts[1].toDouble(&ok[1]);
+            camera.distance = parts[2].toDouble(&ok[2]);
+        }
+        if (!(ok[0] && ok[1] && ok[2]) || !std::isfinite(camera.yaw) ||
+            std::abs(camera.pitch) > 89.9 || !(camera.distance > 0.01 && camera.distance < 20.0))
+            throw UsageError{QStringLiteral("--camera: expected yaw,pitch,distance in degrees, "
+                                            "degrees (|pitch| ≤ 89.9) and metres (0.01-20)")};
+    }
+    return camera;
+}
+
+QString framePath(const QString& pattern, int index) {
+    if (!pattern.contains(QLatin1Char('%'))) return pattern;
+    QByteArray buffer(pattern.size() + 32, '\0');
+    std::snprintf(buffer.data(), static_cast<std::size_t>(buffer.size()),
+                  pattern.toLocal8Bit().constData(), index);
+    return QString::fromLocal8Bit(buffer.constData());
+}
+
+} // namespace
+
+int runRender(const QStringList& arguments) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Render a sheet to PNG with no display (OSMesa), as a still or an image sequence."));
+    parser.addHelpOption();
+    parser.addPositionalArgument(QStringLiteral("render"), QStringLiteral("The subcommand."));
+    addWorldOptions(parser);
+    parser.addOptions({
+        {QStringLiteral("steps"),
+         QStringLiteral("Steps to simulate before the (first) image (default 0)."),
+         QStringLiteral("n")},
+        {QStringLiteral("subdiv"), QStringLiteral("Subdivision level 0-4 (default 3)."),
+         QStringLiteral("level")},
+        {QStringLiteral("size"), QStringLiteral("Image size WxH (default 1280x720)."),
+         QStringLiteral("WxH")},
+        {QStringLiteral("view"), QStringLiteral("Named view: top, front, iso (default iso)."),
+         QStringLiteral("name"), QStringLiteral("iso")},
+        {QStringLiteral("camera"),
+         QStringLiteral(
+             "Explicit camera: yaw,pitch,distance (degrees, degrees, metres) around the sheet."),
+         QStringLiteral("y,p,d")},
+        {QStringLiteral("overlay"),
+         QStringLiteral("Overlays, comma-separated: %1.").arg(overlayNames()),
+         QStringLiteral("list")},
+        {QStringLiteral("no-legend"), QStringLiteral("Leave the overlay legend out.")},
+        {QStringLiteral("output"),
+         QStringLiteral("PNG to write; with --frames a pattern such as frame_%04d.png."),
+         QStringLiteral("file")},
+        {QStringLiteral("frames"), QStringLiteral("Write an image sequence of N frames."),
+         QStringLiteral("n")},
+        {QStringLiteral("every"), QStringLiteral("Steps between frames of a sequence (default 4)."),
+         QStringLiteral("k")},
+        {QStringLiteral("reference"),
+         QStringLiteral("Compare with this PNG; exit 4 and write <output>.diff.png on a mismatch."),
+         QStringLiteral("png")},
+        {QStringLiteral("threshold"),
+         QStringLiteral("Largest fraction of differing pixels that still matches (default 0.01)."),
+         QStringLiteral("t")},
+    });
+    if (!parser.parse(arguments)) throw UsageError{parser.errorText()};
+    if (parser.isSet(QStringLiteral("help"))) {
+        QTextStream(stdout) << parser.helpText();
+        return 0;
+    }
+    rejectExtraArguments(parser, 1);
+    if (!parser.isSet(QStringLiteral("output")))
+        throw UsageError{QStringLiteral("--output is required")};
+    const QString output = parser.value(QStringLiteral("output"));
+
+    int width = 1280, height = 720;
+    if (parser.isSet(QStringLiteral("size"))) {
+        const QStringList wh = parser.value(QStringLiteral("size")).split(QLatin1Char('x'));
+        bool okW = false, okH = false;
+        if (wh.size() == 2) {
+            width = wh[0].toInt(&okW);
+            height = wh[1].toInt(&okH);
+        }
+        if (!okW || !okH || width < 16 || height < 16 || width > OffscreenRenderer::kMaxSize ||
+            height > OffscreenRenderer::kMaxSize)
+            throw UsageError{
+                QStringLiteral("--size: expected WxH with each side 16-%1, e.g. 1920x1080")
+                    .arg(OffscreenRenderer::kMaxSize)};
+    }
+    RenderOptions options;
+    options.subdivision =
+        static_cast<int>(integerOption(parser, QStringLiteral("subdiv"), 0, 4).value_or(3));
+    options.legend = !parser.isSet(QStringLiteral("no-legend"));
+    if (parser.isSet(QStringLiteral("overlay"))) {
+        QString error;
+        const auto bits = overlaysFromNames(parser.value(QStringLiteral("overlay")), &error);
+        if (!bits) throw UsageError{QStringLiteral("--overlay: ") + error};
+        options.overlays = *bits;
+    }
+    const long long steps =
+        integerOption(parser, QStringLiteral("steps"), 0, 1'000'000'000).value_or(0);
+    const int frames =
+        static_cast<int>(integerOption(parser, QStringLiteral("frames"), 1, 100000).value_or(0));
+    const int every =
+        static_cast<int>(integerOption(parser, QStringLiteral("every"), 1, 1'000'000).value_or(4));
+    const bool sequence = frames > 0;
+    if (sequence && parser.isSet(QStringLiteral("reference")))
+        throw UsageError{QStringLiteral("--reference compares a single image; leave out --frames")};
+    if (sequence && frames > 1 && !output.contains(QLatin1Char('%')))
+        throw UsageError{
+            QStringLiteral("--output needs a pattern such as frame_%04d.png with --frames")};
+    const double threshold =
+        realOption(parser, QStringLiteral("threshold"), 0.0, 1.0).value_or(0.01);
+    if (!QFileInfo(framePath(output, 0)).absoluteDir().exists())
+        throw UsageError{QStringLiteral("--output: the folder of '%1' does not exist").arg(output)};
+
+    Simulation sim(worldFromOptions(parser));
+    QTextStream out(stdout), err(stderr);
+    auto advance = [&](long long n) {
+        for (long long k = 0; k < n; ++k)
+            if (sim.step() != StepStatus::Ok) return false;
+        return true;
+    };
+    if (!advance(steps)) {
+        err << "paperfold: the simulation diverged before the first image\n";
+        return 3;
+    }
+
+    QString error;
+    auto renderer = OffscreenRenderer::create(width, height, &error);
+    if (!renderer) {
+        err << "paperfold: " << error << '\n';
+        return 2;
+    }
+    const SheetSnapshot first = makeSnapshot(sim.world());
+    // The camera is framed on the first image and then held, so a sequence does not jitter.
+    const OrbitCamera camera = frameCamera(first, parser, double(width) / height);
+    const bool progress = isatty(fileno(stderr));
+    QElapsedTimer timer;
+    const int count = sequence ? frames : 1;
+    double renderSeconds = 0;
+    for (int f = 0; f < count; ++f) {
+        if (f > 0 && !advance(every)) {
+            err << "\npaperfold: the simulation diverged before frame " << f << '\n';
+            return 3;
+        }
+        const SheetSnapshot snap = f == 0 ? first : makeSnapshot(sim.world());
+        timer.start();
+        const QImage image = renderer->render(snap, camera, options);
+        renderSeconds += timer.nsecsElapsed() * 1e-9;
+        const QString path = framePath(output, f);
+        if (!image.save(path, "PNG")) {
+            err << "paperfold: cannot write " << path << '\n';
+            return 2;
+        }
+        if (sequence && progress)
+            err << QStringLiteral("\rframe %1/%2  t = %3 s")
+                       .arg(f + 1)
+                       .arg(count)
+                       .arg(sim.world().time, 0, 'f', 3)
+                << Qt::flush;
+        else if (sequence && (f + 1) % std::max(1, count / 10) == 0)
+            err << QStringLiteral("frame %1/%2\n").arg(f + 1).arg(count);
+        if (!sequence && parser.isSet(QStringLiteral("reference"))) {
+            const QString refPath = parser.value(QStringLiteral("reference"));
+            const QImage reference(refPath);
+            if (reference.isNull()) {
+                err << "paperfold: cannot read the reference image " << refPath << '\n';
+                return 2;
+            }
+            const ImageDifference d = compareImages(reference, image);
+            out << QStringLiteral("compared with %1: %2 % of pixels differ (threshold %3 %)\n")
+                       .arg(refPath)
+                       .arg(100.0 * d.differingFraction, 0, 'f', 3)
+                       .arg(100.0 * threshold, 0, 'f', 3);
+            if (d.differingFraction > threshold) {
+                const QString diffPath = QFileInfo(path).path() + QLatin1Char('/') +
+                                         QFileInfo(path).completeBaseName() +
+                                         QStringLiteral(".diff.png");
+                if (!d.map.isNull()) d.map.save(diffPath, "PNG");
+                err << "paperfold: the image does not match " << refPath << "; differences in "
+                    << diffPath << '\n';
+                return 4;
+            }
+        }
+    }
+    if (sequence && progress) err << '\n';
+    out << QStringLiteral("wrote %1 image%2 of %3x%4 (%5 s per image, %6)\n")
+               .arg(count)
+               .arg(count == 1 ? QString() : QStringLiteral("s"))
+               .arg(width)
+               .arg(height)
+               .arg(renderSeconds / count, 0, 'f', 3)
+               .arg(renderer->glVersion());
+    return 0;
+}
+
+} // namespace pf::cli

@@ -1,0 +1,46 @@
+#pragma once
+
+#include "Types.h"
+
+#include <Eigen/Geometry>
+#include <optional>
+#include <string_view>
+
+namespace pf {
+
+using Mat4 = Eigen::Matrix4d;
+
+// An orbit camera around a target, y up: yaw turns about y (0 looks along -z from
+// +z), pitch lifts the eye above the horizon. Angles in degrees, distance in metres.
+struct OrbitCamera {
+    Vec3 target = Vec3::Zero();
+    double yaw = 35.0;
+    double pitch = 35.0;
+    double distance = 0.6;
+    double fovY = 35.0;
+    double nearPlane = 0.005;
+    double farPlane = 50.0;
+
+    Vec3 eye() const;
+    Mat4 view() const;
+    Mat4 projection(double aspect) const;
+
+    void orbit(double dYaw, double dPitch);
+    // Moves the target in the view plane by a fraction of the visible height.
+    void pan(double dx, double dy);
+    // factor < 1 moves closer.
+    void zoom(double factor);
+    // Sets the distance so that a sphere of `radius` around `center` fills the view.
+    void fit(const Vec3& center, double radius, double aspect);
+
+    // The world-space ray through a pixel (x right, y down, in a width × height view).
+    struct Ray {
+        Vec3 origin, direction;
+    };
+    Ray rayThroughPixel(double px, double py, int width, int height) const;
+};
+
+// Named views: "top", "front", "iso". Returns nullopt for another name.
+std::optional<OrbitCamera> namedView(std::string_view name);
+
+} // namespace pf

@@ -1,0 +1,91 @@
+#include "Legend.h"
+
+#include "HeatColor.h"
+
+#include <QCoreApplication>
+#include <vector>
+
+namespace pf {
+
+namespace {
+
+QColor heat(double t) {
+    const auto c = heatColor(t);
+    return QColor::fromRgbF(c[0], c[1], c[2]);
+}
+
+QString tr(const char* text) {
+    return QCoreApplication::translate("Legend", text);
+}
+
+} // namespace
+
+void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& options) {
+    struct Bar {
+        QString title;
+        double range;
+        QString unit;
+    };
+    std::vector<Bar> bars;
+    if (options.overlays & OverlayBreakProbability)
+        bars.push_back(
+            {tr("Break probability P (Eq. 10, per 1/60 s)"), options.probabilityRange, QString()});
+    if (options.overlays & OverlayStrain)
+        bars.push_back({tr("Strain |l/l0 - 1|"), options.strainRange * 100.0, QStringLiteral("%")});
+    struct Swatch {
+        QColor color;
+        QString label;
+    };
+    std::vector<Swatch> swatches;
+    if (options.overlays & OverlaySpringKinds) {
+        swatches.push_back({QColor::fromRgbF(0.10, 0.30, 0.95), tr("breakable spring")});
+        swatches.push_back({QColor::fromRgbF(0.45, 0.65, 1.00), tr("unbreakable spring")});
+        swatches.push_back({QColor::fromRgbF(0.90, 0.10, 0.10), tr("crease (broken)")});
+        swatches.push_back({QColor::fromRgbF(0.10, 0.70, 0.20), tr("hinge")});
+    }
+    if (options.overlays & OverlayRecentBreaks)
+        swatches.push_back({QColor::fromRgbF(1.0, 0.0, 0.75), tr("broken in the last second")});
+    if (bars.empty() && swatches.empty()) return;
+
+    const double scale = std::max(1.0, area.height() / 720.0);
+    QFont font = painter.font();
+    font.setPixelSize(static_cast<int>(13 * scale));
+    painter.setFont(font);
+    const int line = static_cast<int>(18 * scale), pad = static_cast<int>(10 * scale);
+    const int barW = static_cast<int>(220 * scale), barH = static_cast<int>(12 * scale);
+    const int height = pad * 2 + static_cast<int>(bars.size()) * (line * 2 + barH) +
+                       static_cast<int>(swatches.size()) * line;
+    const int width = barW + pad * 2 + static_cast<int>(110 * scale);
+    const QRect box(area.left() + pad, area.bottom() - height - pad, width, height);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(255, 255, 255, 215));
+    painter.drawRoundedRect(box, 6 * scale, 6 * scale);
+
+    int y = box.top() + pad;
+    painter.setPen(QColor(30, 30, 30));
+    for (const Bar& b : bars) {
+        painter.drawText(QRect(box.left() + pad, y, width - 2 * pad, line),
+                         Qt::AlignLeft | Qt::AlignVCenter, b.title);
+        y += line;
+        QLinearGradient g(box.left() + pad, 0, box.left() + pad + barW, 0);
+        for (int k = 0; k <= 8; ++k) g.setColorAt(k / 8.0, heat(k / 8.0));
+        painter.fillRect(QRect(box.left() + pad, y, barW, barH), g);
+        y += barH;
+        painter.drawText(QRect(box.left() + pad, y, barW, line), Qt::AlignLeft | Qt::AlignVCenter,
+                         QStringLiteral("0"));
+        painter.drawText(QRect(box.left() + pad, y, barW, line), Qt::AlignRight | Qt::AlignVCenter,
+                         QStringLiteral("≥ %1%2").arg(b.range, 0, 'g', 3).arg(b.unit));
+        y += line;
+    }
+    for (const Swatch& s : swatches) {
+        painter.fillRect(QRect(box.left() + pad, y + line / 2 - 2, static_cast<int>(24 * scale),
+                               static_cast<int>(4 * scale)),
+                         s.color);
+        painter.drawText(QRect(box.left() + pad + static_cast<int>(32 * scale), y, width, line),
+                         Qt::AlignLeft | Qt::AlignVCenter, s.label);
+        y += line;
+    }
+}
+
+} // namespace pf

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <QString>
+#include <optional>
+
+namespace pf {
+
+// Overlays, each switchable. Colours follow the paper's Fig. 4 where it has them:
+// breakable springs blue, auxiliary (crease) springs red.
+enum Overlay : unsigned {
+    OverlaySpringKinds = 1u << 0,      // structural blue, crease red, hinge green
+    OverlayBreakProbability = 1u << 1, // Eq. 10 per edge, heat colours
+    OverlayStrain = 1u << 2,           // |l/l0 - 1| on the surface, heat colours
+    OverlayRecentBreaks = 1u << 3,     // edges broken in the last second
+    OverlayWireframe = 1u << 4,        // the simulation mesh over the subdivided surface
+};
+
+struct RenderOptions {
+    int subdivision = 3;
+    unsigned overlays = 0;
+    bool ground = true;
+    bool sphere = true;
+    bool legend = true;
+    // Share of the facet normal in the shading: 0 smooth, 1 faceted.
+    double facet = 0.35;
+    // Heat-map ranges (values at the top of the legend).
+    double strainRange = 0.05;
+    double probabilityRange = 0.05;
+};
+
+// Parses "springs,probability,strain,breaks,wireframe" (or "none"); nullopt and a
+// message naming the unknown word otherwise.
+std::optional<unsigned> overlaysFromNames(const QString& names, QString* error);
+QString overlayNames();
+
+} // namespace pf

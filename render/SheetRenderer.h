@@ -1,0 +1,57 @@
+#pragma once
+
+#include "Camera.h"
+#include "GlFunctions.h"
+#include "RenderOptions.h"
+#include "SheetSnapshot.h"
+
+#include <QString>
+#include <vector>
+
+namespace pf {
+
+// Draws a sheet snapshot with GL 3.3 core into whatever framebuffer is bound: the
+// editor's QOpenGLWidget and the headless OSMesa path run this same code. All GL
+// calls go through the GlFunctions table it is given.
+class SheetRenderer {
+  public:
+    // Needs a current context; `gl` must outlive the renderer.
+    bool initialize(const GlFunctions& gl, QString* error);
+    // Deletes the GL objects; needs the same context current.
+    void release();
+    bool initialized() const { return gl_ != nullptr; }
+
+    void render(const SheetSnapshot& snapshot, const OrbitCamera& camera,
+                const RenderOptions& options, int width, int height);
+
+    // The paper colour and the background, also used by legends and tests.
+    static constexpr float kPaper[3] = {0.95f, 0.94f, 0.90f};
+    static constexpr float kBackground[3] = {0.80f, 0.82f, 0.85f};
+
+  private:
+    struct LineBatch {
+        int first = 0, count = 0;
+        float halfWidth = 1.0f;
+    };
+    GLuint program(const char* vert, const char* geom, const char* frag, QString* error);
+    void uploadSurface(const SheetSnapshot& snap, const RenderOptions& options);
+    void buildLines(const SheetSnapshot& snap, const RenderOptions& options);
+    void makeSphere();
+    void setMatrix(GLuint prog, const char* name, const Mat4& m);
+    void setVec3(GLuint prog, const char* name, const float* v);
+
+    const GlFunctions* gl_ = nullptr;
+    GLuint surfaceProgram_ = 0, linesProgram_ = 0, shadowProgram_ = 0, groundProgram_ = 0,
+           backgroundProgram_ = 0;
+    GLuint surfaceVao_ = 0, surfaceVbo_ = 0, surfaceEbo_ = 0;
+    GLuint linesVao_ = 0, linesVbo_ = 0;
+    GLuint groundVao_ = 0, groundVbo_ = 0;
+    GLuint sphereVao_ = 0, sphereVbo_ = 0, sphereEbo_ = 0;
+    GLuint emptyVao_ = 0;
+    GLsizei surfaceIndexCount_ = 0, sphereIndexCount_ = 0;
+    std::vector<float> vertexData_, lineData_;
+    std::vector<std::uint32_t> indexData_;
+    std::vector<LineBatch> lineBatches_;
+};
+
+} // namespace pf

@@ -1,0 +1,4 @@
+#version 330 core
+in vec4 fColor;
+out vec4 fragColor;
+void main() { fragColor = fColor; }

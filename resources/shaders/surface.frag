@@ -1,0 +1,33 @@
+#version 330 core
+// Paper: two-sided, soft key light plus sky/ground ambient. A share of the facet
+// normal (from screen-space derivatives) is mixed in so that creases read as
+// creases even where the Hermite-smoothed normals round them off.
+in vec3 vPos;
+in vec3 vNormal;
+in vec4 vColor;
+uniform vec3 uEye;
+uniform vec3 uBaseColor;
+uniform float uAlpha;
+uniform float uFacet;
+out vec4 fragColor;
+void main() {
+    vec3 view = normalize(uEye - vPos);
+    vec3 n = normalize(vNormal);
+    if (dot(n, view) < 0.0) n = -n;
+    vec3 facet = normalize(cross(dFdx(vPos), dFdy(vPos)));
+    if (dot(facet, view) < 0.0) facet = -facet;
+    n = normalize(mix(n, facet, uFacet));
+
+    vec3 key = normalize(vec3(0.35, 1.0, 0.45));
+    vec3 fill = normalize(vec3(-0.6, 0.4, -0.5));
+    float diffuse = max(dot(n, key), 0.0);
+    float fillLight = max(dot(n, fill), 0.0);
+    float hemi = 0.5 + 0.5 * n.y;
+    vec3 ambient = mix(vec3(0.42, 0.40, 0.38), vec3(0.62, 0.64, 0.68), hemi);
+    vec3 halfway = normalize(key + view);
+    float spec = pow(max(dot(n, halfway), 0.0), 24.0) * 0.06;
+
+    vec3 base = mix(uBaseColor, vColor.rgb, vColor.a);
+    vec3 color = base * (0.55 * ambient + 0.62 * diffuse + 0.16 * fillLight) + vec3(spec);
+    fragColor = vec4(color, uAlpha);
+}

@@ -1,0 +1,16 @@
+#version 330 core
+layout(location = 0) in vec3 aPos;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec4 aColor;
+uniform mat4 uViewProj;
+uniform mat4 uModel;
+out vec3 vPos;
+out vec3 vNormal;
+out vec4 vColor;
+void main() {
+    vec4 world = uModel * vec4(aPos, 1.0);
+    vPos = world.xyz;
+    vNormal = mat3(uModel) * aNormal;
+    vColor = aColor;
+    gl_Position = uViewProj * world;
+}

@@ -1,0 +1,33 @@
+#pragma once
+
+#include "Collisions.h"
+#include "World.h"
+
+#include <vector>
+
+namespace pf {
+
+// An immutable picture of a World for drawing: geometry, topology and the overlay
+// data. The simulation thread publishes these; the renderer only reads them.
+struct SheetSnapshot {
+    std::vector<Vec3> x;
+    std::vector<Triangle> tris;
+    std::vector<std::array<Index, 2>> springEnds;
+    std::vector<SpringKind> springKind;
+    std::vector<std::uint8_t> breakable;
+    std::vector<float> breakProbability;      // Eq. 10 per spring (0 where it cannot break)
+    std::vector<float> strain;                // per spring: l/l0 - 1
+    std::vector<std::uint8_t> recentlyBroken; // per spring: part of a break in the last second
+    std::vector<float> vertexStrain;          // per vertex: max |strain| of its structural springs
+    SphereTool sphere;
+    bool groundEnabled = true;
+    double groundHeight = 0.0;
+    double time = 0.0;
+    std::int64_t step = 0;
+    double sigma = 1.0;
+};
+
+// `recentSeconds`: how far back a break counts as recent.
+SheetSnapshot makeSnapshot(const World& world, double recentSeconds = 1.0);
+
+} // namespace pf

@@ -1,0 +1,134 @@
+// Headless rendering through OSMesa: real pixels against committed baselines.
+//
+// Comparison (render/ImageCompare.h): both images are blurred 3×3, a pixel differs
+// when a channel differs by more than 6/255, and a case passes while at most
+// kThreshold of its pixels differ. That absorbs rasterisation noise and one-pixel
+// edge shifts but not a changed surface, overlay or camera.
+//
+// Regenerate on purpose with PAPERFOLD_REGENERATE_BASELINES=1: the images are
+// rewritten into tests/baselines/ and the comparison is skipped for that run.
+#include "ImageCompare.h"
+#include "OffscreenRenderer.h"
+#include "RenderCases.h"
+
+#include <QDir>
+#include <QtTest>
+
+using namespace pf;
+
+namespace {
+
+constexpr int kWidth = 480, kHeight = 270;
+constexpr double kThreshold = 0.005;
+
+QString baselinePath(const QString& name) {
+    return QStringLiteral(PAPERFOLD_BASELINES) + QLatin1Char('/') + name + QStringLiteral(".png");
+}
+
+} // namespace
+
+class TestRender : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<OffscreenRenderer> renderer;
+
+    QImage draw(const test::RenderCase& c) {
+        const SheetSnapshot snap = test::snapshotFor(c);
+        return renderer->render(snap, test::cameraFor(c, snap, double(kWidth) / kHeight),
+                                test::optionsFor(c));
+    }
+
+  private slots:
+    void initTestCase() {
+        QString error;
+        renderer = OffscreenRenderer::create(kWidth, kHeight, &error);
+        QVERIFY2(renderer, qPrintable(error));
+        qInfo("%s", qPrintable(renderer->glVersion()));
+    }
+
+    void matchesBaseline_data() {
+        QTest::addColumn<int>("index");
+        for (std::size_t i = 0; i < test::renderCases().size(); ++i)
+            QTest::newRow(qPrintable(test::renderCases()[i].name)) << static_cast<int>(i);
+    }
+    void matchesBaseline() {
+        QFETCH(int, index);
+        const test::RenderCase& c = test::renderCases()[static_cast<std::size_t>(index)];
+        const QImage image = draw(c);
+        QCOMPARE(image.size(), QSize(kWidth, kHeight));
+        if (qEnvironmentVariableIsSet("PAPERFOLD_REGENERATE_BASELINES")) {
+            QVERIFY(image.save(baselinePath(c.name), "PNG"));
+            QSKIP("baseline rewritten");
+        }
+        const QImage baseline(baselinePath(c.name));
+        QVERIFY2(!baseline.isNull(),
+                 qPrintable(QStringLiteral("missing baseline ") + baselinePath(c.name)));
+        const ImageDifference d = compareImages(baseline, image);
+        if (d.differingFraction > kThreshold) {
+            const QString out = QDir::temp().filePath(c.name);
+            image.save(out + QStringLiteral(".actual.png"));
+            d.map.save(out + QStringLiteral(".diff.png"));
+        }
+        QVERIFY2(d.differingFraction <= kThreshold,
+                 qPrintable(QStringLiteral("%1 % of pixels differ; see %2.*.png")
+                                .arg(100 * d.differingFraction)
+                                .arg(QDir::temp().filePath(c.name))));
+    }
+
+    void renderingIsDeterministic() {
+        const test::RenderCase& c = test::renderCases()[0];
+        QCOMPARE(draw(c), draw(c));
+    }
+
+    void sigmaVisiblyChangesTheSurface() {
+        // A coarse crumpled sheet up close, σ = 0 against σ = 1 (the two coarse
+        // baselines): the difference is far beyond the tolerance.
+        const QImage a = draw(test::renderCases()[7]), b = draw(test::renderCases()[6]);
+        const ImageDifference d = compareImages(a, b);
+        qInfo("sigma 0 vs 1: %.2f %% of pixels differ", 100 * d.differingFraction);
+        QVERIFY(d.differingFraction > 2 * kThreshold);
+    }
+
+    void eachOverlayChangesThePicture_data() {
+        QTest::addColumn<unsigned>("overlay");
+        QTest::newRow("springs") << unsigned(OverlaySpringKinds);
+        QTest::newRow("probability") << unsigned(OverlayBreakProbability);
+        QTest::newRow("strain") << unsigned(OverlayStrain);
+        QTest::newRow("breaks") << unsigned(OverlayRecentBreaks);
+        QTest::newRow("wireframe") << unsigned(OverlayWireframe);
+    }
+    void eachOverlayChangesThePicture() {
+        QFETCH(unsigned, overlay);
+        test::RenderCase plain = test::renderCases()[0], with = plain;
+        with.overlays = overlay;
+        const ImageDifference d = compareImages(draw(plain), draw(with));
+        QVERIFY2(d.differingFraction > 0.002, qPrintable(QString::number(d.differingFraction)));
+    }
+
+    void thePaperIsInThePicture() {
+        // From the top, the flat sheet of a fresh press scene covers the middle of the
+        // image in paper white, brighter than the desk around it.
+        test::RenderCase c = test::renderCases()[0];
+        c.steps = 0;
+        c.view = "top";
+        const QImage image = draw(c);
+        const QRgb centre = image.pixel(kWidth / 2 - 40, kHeight / 2);
+        const QRgb corner = image.pixel(5, 5);
+        QVERIFY2(qGray(centre) > 200, qPrintable(QString::number(qGray(centre))));
+        QVERIFY(qGray(centre) > qGray(corner) + 30);
+    }
+
+    void overlayNamesParse() {
+        QString error;
+        QCOMPARE(overlaysFromNames(QStringLiteral("springs,strain"), &error).value(),
+                 unsigned(OverlaySpringKinds | OverlayStrain));
+        QCOMPARE(overlaysFromNames(QStringLiteral("none"), &error).value(), 0u);
+        QVERIFY(!overlaysFromNames(QStringLiteral("springs,glitter"), &error));
+        QVERIFY(error.contains(QStringLiteral("glitter")));
+    }
+
+    void cleanupTestCase() { renderer.reset(); }
+};
+
+QTEST_MAIN(TestRender)
+#include "test_render.moc"

@@ -1,0 +1,88 @@
+#include "Viewport.h"
+
+#include "Legend.h"
+
+#include <QElapsedTimer>
+#include <QOpenGLContext>
+#include <QPainter>
+
+namespace pf {
+
+Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
+    setFormat(requiredFormat());
+    setMinimumSize(160, 120);
+}
+
+Viewport::~Viewport() {
+    releaseGl();
+}
+
+QSurfaceFormat Viewport::requiredFormat() {
+    QSurfaceFormat f;
+    f.setVersion(3, 3);
+    f.setProfile(QSurfaceFormat::CoreProfile);
+    f.setDepthBufferSize(24);
+    f.setStencilBufferSize(8);
+    f.setSamples(4);
+    return f;
+}
+
+void Viewport::releaseGl() {
+    if (!renderer_.initialized() || !context()) return;
+    makeCurrent();
+    renderer_.release();
+    doneCurrent();
+}
+
+void Viewport::setSnapshot(std::shared_ptr<const SheetSnapshot> snapshot) {
+    snapshot_ = std::move(snapshot);
+    update();
+}
+
+void Viewport::setCamera(const OrbitCamera& camera) {
+    camera_ = camera;
+    update();
+}
+
+void Viewport::setRenderOptions(const RenderOptions& options) {
+    options_ = options;
+    update();
+}
+
+void Viewport::initializeGL() {
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl,
+            Qt::UniqueConnection);
+    QOpenGLContext* ctx = context();
+    std::string missing;
+    const bool loaded = gl_.load(
+        [ctx](const char* name) { return reinterpret_cast<void*>(ctx->getProcAddress(name)); },
+        &missing);
+    if (!loaded) {
+        glError_ =
+            tr("OpenGL 3.3 is not available (missing %1)").arg(QString::fromStdString(missing));
+        return;
+    }
+    QString error;
+    if (!renderer_.initialize(gl_, &error)) glError_ = error;
+}
+
+void Viewport::paintGL() {
+    QElapsedTimer timer;
+    timer.start();
+    const qreal dpr = devicePixelRatioF();
+    const int w = static_cast<int>(width() * dpr), h = static_cast<int>(height() * dpr);
+    if (renderer_.initialized() && snapshot_) renderer_.render(*snapshot_, camera_, options_, w, h);
+    if (!glError_.isEmpty() || (options_.legend && options_.overlays)) {
+        QPainter painter(this);
+        if (!glError_.isEmpty()) {
+            painter.fillRect(rect(), palette().window());
+            painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, glError_);
+        } else {
+            drawLegend(painter, rect(), options_);
+        }
+    }
+    lastFrameSeconds_ = timer.nsecsElapsed() * 1e-9;
+    emit frameDrawn();
+}
+
+} // namespace pf

@@ -1,0 +1,58 @@
+#pragma once
+
+#include "Camera.h"
+#include "GlFunctions.h"
+#include "RenderOptions.h"
+#include "SheetRenderer.h"
+#include "SheetSnapshot.h"
+
+#include <QOpenGLWidget>
+#include <memory>
+
+namespace pf {
+
+// The editor's 3D view: draws the newest snapshot with the shared SheetRenderer.
+// GL is resolved through QOpenGLContext::getProcAddress into the same function
+// table the headless path fills from OSMesa.
+class Viewport : public QOpenGLWidget {
+    Q_OBJECT
+
+  public:
+    explicit Viewport(QWidget* parent = nullptr);
+    ~Viewport() override;
+
+    // The surface format every viewport asks for: GL 3.3 core, depth, stencil, 4× MSAA.
+    static QSurfaceFormat requiredFormat();
+
+    void setSnapshot(std::shared_ptr<const SheetSnapshot> snapshot);
+    const SheetSnapshot* snapshot() const { return snapshot_.get(); }
+    void setCamera(const OrbitCamera& camera);
+    const OrbitCamera& camera() const { return camera_; }
+    void setRenderOptions(const RenderOptions& options);
+    const RenderOptions& renderOptions() const { return options_; }
+
+    // Empty if GL came up; otherwise why not.
+    QString glError() const { return glError_; }
+    // Seconds the last paintGL took.
+    double lastFrameSeconds() const { return lastFrameSeconds_; }
+
+  signals:
+    void frameDrawn();
+
+  protected:
+    void initializeGL() override;
+    void paintGL() override;
+
+  private:
+    void releaseGl();
+
+    GlFunctions gl_;
+    SheetRenderer renderer_;
+    std::shared_ptr<const SheetSnapshot> snapshot_;
+    OrbitCamera camera_;
+    RenderOptions options_;
+    QString glError_;
+    double lastFrameSeconds_ = 0.0;
+};
+
+} // namespace pf
