@@ -1,4 +1,5 @@
 #include "CommandLine.h"
+#include "EditorMain.h"
 #include "ExportCommand.h"
 #include "RenderCommand.h"
 #include "SimulateCommand.h"
@@ -15,7 +16,8 @@
 namespace {
 
 void printUsage(QTextStream& out) {
-    out << "usage: paperfold <command> [options]\n"
+    out << "usage: paperfold [--lang CODE] [sheet.paper]   start the editor\n"
+           "       paperfold <command> [options]           run headless\n"
            "\n"
            "commands:\n"
            "  simulate   run a scene or a saved sheet headless; report statistics, save\n"
@@ -29,7 +31,22 @@ void printUsage(QTextStream& out) {
 
 } // namespace
 
+namespace {
+
+// The editor takes options (--lang, --help-all, ...) and a .paper file; any other first
+// word must be a command, so a typo gets an error instead of an editor window.
+bool startsEditor(int argc, char* argv[]) {
+    if (argc < 2) return true;
+    const std::string_view first = argv[1];
+    if (first == "--help" || first == "-h") return false;
+    return first.starts_with('-') || first.ends_with(".paper");
+}
+
+} // namespace
+
 int main(int argc, char* argv[]) {
+    // No command (or only editor options and a file): the desktop editor.
+    if (startsEditor(argc, argv)) return pf::runEditor(argc, argv);
     // Rendering draws legends with fonts, which need a GUI application; the
     // offscreen platform gives one with no display at all.
     const bool gui = argc >= 2 && std::string_view(argv[1]) == "render";
@@ -46,9 +63,10 @@ int main(int argc, char* argv[]) {
     QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_STRING));
     const QStringList args = QCoreApplication::arguments();
     QTextStream out(stdout), err(stderr);
-    if (args.size() < 2 || args[1] == QLatin1String("--help") || args[1] == QLatin1String("-h")) {
-        printUsage(args.size() < 2 ? err : out);
-        return args.size() < 2 ? 1 : 0;
+    if (args[1] == QLatin1String("--help") || args[1] == QLatin1String("-h") ||
+        args[1] == QLatin1String("help")) {
+        printUsage(out);
+        return 0;
     }
     try {
         if (args[1] == QLatin1String("simulate")) return pf::cli::runSimulate(args);

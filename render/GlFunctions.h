@@ -21,7 +21,7 @@ using GlProcResolver = std::function<void*(const char* name)>;
     X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                                   \
     X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                                                 \
     X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                                   \
-    X(PFNGLBLENDFUNCPROC, BlendFunc)                                                               \
+    X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)                                               \
     X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)                                                   \
     X(PFNGLBUFFERDATAPROC, BufferData)                                                             \
     X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                                     \

@@ -14,10 +14,6 @@ QColor heat(double t) {
     return QColor::fromRgbF(c[0], c[1], c[2]);
 }
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("Legend", text);
-}
-
 } // namespace
 
 void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& options) {
@@ -29,22 +25,29 @@ void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& optio
     std::vector<Bar> bars;
     if (options.overlays & OverlayBreakProbability)
         bars.push_back(
-            {tr("Break probability P (Eq. 10, per 1/60 s)"), options.probabilityRange, QString()});
+            {QCoreApplication::translate("Legend", "Break probability P (Eq. 10, per 1/60 s)"),
+             options.probabilityRange, QString()});
     if (options.overlays & OverlayStrain)
-        bars.push_back({tr("Strain |l/l0 - 1|"), options.strainRange * 100.0, QStringLiteral("%")});
+        bars.push_back({QCoreApplication::translate("Legend", "Strain |l/l0 - 1|"),
+                        options.strainRange * 100.0, QStringLiteral("%")});
     struct Swatch {
         QColor color;
         QString label;
     };
     std::vector<Swatch> swatches;
     if (options.overlays & OverlaySpringKinds) {
-        swatches.push_back({QColor::fromRgbF(0.10, 0.30, 0.95), tr("breakable spring")});
-        swatches.push_back({QColor::fromRgbF(0.45, 0.65, 1.00), tr("unbreakable spring")});
-        swatches.push_back({QColor::fromRgbF(0.90, 0.10, 0.10), tr("crease (broken)")});
-        swatches.push_back({QColor::fromRgbF(0.10, 0.70, 0.20), tr("hinge")});
+        swatches.push_back({QColor::fromRgbF(0.10, 0.30, 0.95),
+                            QCoreApplication::translate("Legend", "breakable spring")});
+        swatches.push_back({QColor::fromRgbF(0.45, 0.65, 1.00),
+                            QCoreApplication::translate("Legend", "unbreakable spring")});
+        swatches.push_back({QColor::fromRgbF(0.90, 0.10, 0.10),
+                            QCoreApplication::translate("Legend", "crease (broken)")});
+        swatches.push_back(
+            {QColor::fromRgbF(0.10, 0.70, 0.20), QCoreApplication::translate("Legend", "hinge")});
     }
     if (options.overlays & OverlayRecentBreaks)
-        swatches.push_back({QColor::fromRgbF(1.0, 0.0, 0.75), tr("broken in the last second")});
+        swatches.push_back({QColor::fromRgbF(1.0, 0.0, 0.75),
+                            QCoreApplication::translate("Legend", "broken in the last second")});
     if (bars.empty() && swatches.empty()) return;
 
     const double scale = std::max(1.0, area.height() / 720.0);

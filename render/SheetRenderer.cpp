@@ -303,7 +303,9 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
     gl.Disable(GL_CULL_FACE);
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LESS);
-    gl.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    // Blend colour only: destination alpha stays 1, because the editor's widget is
+    // composited into the window as premultiplied alpha.
+    gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
 
     gl.DepthMask(GL_FALSE);
     gl.UseProgram(backgroundProgram_);

@@ -15,7 +15,7 @@ class TestViewport : public QObject {
   private slots:
     void editorPathMatchesOsMesaPath_data() {
         QTest::addColumn<int>("index");
-        for (int i : {0, 2, 3})
+        for (int i : {0, 1, 2, 3})
             QTest::newRow(qPrintable(test::renderCases()[static_cast<std::size_t>(i)].name)) << i;
     }
     void editorPathMatchesOsMesaPath() {

@@ -8,9 +8,39 @@
 
 namespace pf {
 
-Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
+// The legend and any GL error, drawn by a transparent child widget over the GL
+// picture. Painting them with QPainter inside paintGL would leave QPainter's GL
+// state (blending, programs, buffers) behind for the next frame.
+class Viewport::Overlay : public QWidget {
+  public:
+    explicit Overlay(Viewport* view) : QWidget(view), view_(view) {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setAttribute(Qt::WA_NoSystemBackground);
+    }
+
+  protected:
+    void paintEvent(QPaintEvent*) override {
+        QPainter painter(this);
+        if (!view_->glError_.isEmpty()) {
+            painter.fillRect(rect(), palette().window());
+            painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, view_->glError_);
+        } else if (view_->options_.legend && view_->options_.overlays) {
+            drawLegend(painter, rect(), view_->options_);
+        }
+    }
+
+  private:
+    Viewport* view_;
+};
+
+Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent), overlay_(new Overlay(this)) {
     setFormat(requiredFormat());
     setMinimumSize(160, 120);
+}
+
+void Viewport::resizeEvent(QResizeEvent* event) {
+    QOpenGLWidget::resizeEvent(event);
+    overlay_->setGeometry(rect());
 }
 
 Viewport::~Viewport() {
@@ -47,6 +77,7 @@ void Viewport::setCamera(const OrbitCamera& camera) {
 void Viewport::setRenderOptions(const RenderOptions& options) {
     options_ = options;
     update();
+    overlay_->update();
 }
 
 void Viewport::initializeGL() {
@@ -64,6 +95,7 @@ void Viewport::initializeGL() {
     }
     QString error;
     if (!renderer_.initialize(gl_, &error)) glError_ = error;
+    overlay_->update();
 }
 
 void Viewport::paintGL() {
@@ -72,15 +104,6 @@ void Viewport::paintGL() {
     const qreal dpr = devicePixelRatioF();
     const int w = static_cast<int>(width() * dpr), h = static_cast<int>(height() * dpr);
     if (renderer_.initialized() && snapshot_) renderer_.render(*snapshot_, camera_, options_, w, h);
-    if (!glError_.isEmpty() || (options_.legend && options_.overlays)) {
-        QPainter painter(this);
-        if (!glError_.isEmpty()) {
-            painter.fillRect(rect(), palette().window());
-            painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, glError_);
-        } else {
-            drawLegend(painter, rect(), options_);
-        }
-    }
     lastFrameSeconds_ = timer.nsecsElapsed() * 1e-9;
     emit frameDrawn();
 }

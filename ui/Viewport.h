@@ -43,8 +43,13 @@ class Viewport : public QOpenGLWidget {
     void initializeGL() override;
     void paintGL() override;
 
+  protected:
+    void resizeEvent(QResizeEvent* event) override;
+
   private:
     void releaseGl();
+    class Overlay;
+    Overlay* overlay_ = nullptr; // the legend and GL errors, painted by a child widget
 
     GlFunctions gl_;
     SheetRenderer renderer_;

@@ -1,0 +1,281 @@
+// The editor driven like a user: QTest mouse and actions on a real MainWindow
+// (under xvfb-run), checked against what the simulation thread reports.
+#include "MainWindow.h"
+#include "ParameterPanel.h"
+#include "SheetFile.h"
+#include "SheetStats.h"
+#include "SimulationThread.h"
+#include "Viewport.h"
+
+#include <QComboBox>
+#include <QElapsedTimer>
+#include <QMenuBar>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace pf;
+
+namespace {
+
+// The simulation thread may emit before the test starts waiting (QSignalSpy records
+// directly), so wait for a count rather than for the next emission.
+bool waitForCount(QSignalSpy& spy, int count, int ms = 5000) {
+    QElapsedTimer t;
+    t.start();
+    while (spy.count() < count && t.elapsed() < ms) QTest::qWait(5);
+    return spy.count() >= count;
+}
+
+// A copy of the simulation's whole state, as the window's Save would take it.
+std::shared_ptr<const World> worldOf(MainWindow& w) {
+    QSignalSpy spy(w.simulation(), &SimulationThread::worldCopied);
+    w.simulation()->requestWorld(987654);
+    if (!waitForCount(spy, 1)) return nullptr;
+    return spy.takeFirst().at(1).value<std::shared_ptr<const World>>();
+}
+
+// Waits for a snapshot published after everything queued so far was applied.
+SimulationStatus settledStatus(MainWindow& w) {
+    w.simulation()->sync();
+    QSignalSpy spy(w.simulation(), &SimulationThread::snapshotReady);
+    w.simulation()->setPlaying(false); // publishes
+    waitForCount(spy, 1);
+    return w.simulation()->status();
+}
+
+QPoint viewportCentre(MainWindow& w) {
+    return w.viewport()->rect().center();
+}
+
+} // namespace
+
+class TestEditor : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<MainWindow> window;
+    QString lastError;
+    QString nextFile;
+
+    void makeWindow() {
+        window = std::make_unique<MainWindow>();
+        window->resize(1000, 700);
+        window->showError = [this](const QString& m) { lastError = m; };
+        window->chooseFile = [this](MainWindow::FileDialog) { return nextFile; };
+        window->askToSave = [] { return QMessageBox::Discard; };
+        window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window.get()));
+        QTRY_VERIFY(window->viewport()->snapshot() != nullptr);
+        window->action("play")->setChecked(false);
+        window->simulation()->sync();
+    }
+
+  private slots:
+    void init() {
+        lastError.clear();
+        makeWindow();
+    }
+    void cleanup() { window.reset(); }
+
+    void slidersChangeTheParametersTheSimulationUses() {
+        QSignalSpy applied(window->simulation(), &SimulationThread::paramsApplied);
+        window->panel()->phiSlider()->setValue(80);
+        QVERIFY(waitForCount(applied, 1));
+        QCOMPARE(applied.last().at(0).value<SimParams>().phi, 0.80);
+        window->panel()->psiSlider()->setValue(60);
+        QVERIFY(waitForCount(applied, 2));
+        QCOMPARE(applied.last().at(0).value<SimParams>().psi, 0.60);
+        window->panel()->sigmaSlider()->setValue(50);
+        QVERIFY(waitForCount(applied, 3));
+        QCOMPARE(applied.last().at(0).value<SimParams>().sigma, 0.50);
+        window->panel()->integratorBox()->setCurrentText(QStringLiteral("backward-euler"));
+        QVERIFY(waitForCount(applied, 4));
+        QCOMPARE(applied.last().at(0).value<SimParams>().integrator, std::string("backward-euler"));
+        window->panel()->iterationsBox()->setValue(4);
+        QVERIFY(waitForCount(applied, 5));
+        QCOMPARE(applied.last().at(0).value<SimParams>().iterations, 4);
+        // And the simulation's own state agrees.
+        const auto world = worldOf(*window);
+        QCOMPARE(world->params.phi, 0.80);
+        QCOMPARE(world->params.psi, 0.60);
+        QCOMPARE(world->params.iterations, 4);
+        // Each of those edits is one undo step; undo puts φ back.
+        QCOMPARE(window->undoStack()->count(), 5);
+        window->undoStack()->undo();
+        window->undoStack()->undo();
+        window->undoStack()->undo();
+        window->undoStack()->undo();
+        QVERIFY(waitForCount(applied, 9));
+        QCOMPARE(worldOf(*window)->params.phi, 0.80);
+        window->undoStack()->undo();
+        window->simulation()->sync();
+        QTRY_COMPARE(worldOf(*window)->params.phi, 0.10);
+    }
+
+    void aSliderDragIsOneUndoStep() {
+        QSlider* s = window->panel()->phiSlider();
+        emit s->sliderPressed();
+        s->setSliderDown(true);
+        for (int v = 11; v <= 40; ++v) s->setValue(v);
+        s->setSliderDown(false);
+        emit s->sliderReleased();
+        QCOMPARE(window->undoStack()->count(), 1);
+        window->undoStack()->undo();
+        QCOMPARE(window->params().phi, 0.10);
+        window->undoStack()->redo();
+        QCOMPARE(window->params().phi, 0.40);
+    }
+
+    void pushStrokeBreaksAndUndoRedoRestoreTheCount() {
+        Viewport* view = window->viewport();
+        const SimulationStatus before = settledStatus(*window);
+        QSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        // One stroke: press in the middle of the sheet, step the (paused) simulation
+        // while dragging across, release.
+        QPoint p = viewportCentre(*window) + QPoint(-60, 0);
+        QTest::mouseMove(view, p);
+        QTest::mousePress(view, Qt::LeftButton, {}, p);
+        for (int k = 0; k < 240; ++k) {
+            if (k % 8 == 0) {
+                p += QPoint(4, 1);
+                QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton,
+                                 Qt::LeftButton, Qt::NoModifier);
+                QApplication::sendEvent(view, &move);
+            }
+            window->simulation()->stepOnce();
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+        QVERIFY(waitForCount(recorded, 1));
+        const SimulationStatus after = settledStatus(*window);
+        qInfo("stroke: %d -> %d breaks", before.breaks, after.breaks);
+        QVERIFY(after.breaks > before.breaks);
+        QCOMPARE(window->undoStack()->count(), 1);
+        QVERIFY(window->isModified());
+
+        QSignalSpy undone(window->simulation(), &SimulationThread::strokeUndone);
+        window->action("undo")->trigger();
+        QVERIFY(waitForCount(undone, 1));
+        QCOMPARE(settledStatus(*window).breaks, before.breaks);
+
+        QSignalSpy redone(window->simulation(), &SimulationThread::strokeRedone);
+        window->action("redo")->trigger();
+        QVERIFY(waitForCount(redone, 1));
+        QCOMPARE(settledStatus(*window).breaks, after.breaks);
+    }
+
+    void saveThenOpenRestoresTheSheetExactly() {
+        QTemporaryDir dir;
+        for (int k = 0; k < 60; ++k) window->simulation()->stepOnce();
+        window->simulation()->sync();
+        nextFile = dir.filePath(QStringLiteral("mine.paper"));
+        window->action("saveAs")->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        QVERIFY(QFileInfo::exists(nextFile));
+        QVERIFY(!window->isModified());
+        QVERIFY(window->windowTitle().startsWith(QStringLiteral("mine.paper")));
+        QVERIFY(!window->isWindowModified());
+        const auto saved = worldOf(*window);
+
+        // Change it: a parameter edit marks the window modified.
+        window->panel()->phiSlider()->setValue(70);
+        QVERIFY(window->isModified());
+        QTRY_VERIFY(window->isWindowModified());
+        for (int k = 0; k < 30; ++k) window->simulation()->stepOnce();
+        window->simulation()->sync();
+
+        window->action("open")->trigger(); // askToSave answers Discard
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        const auto opened = worldOf(*window);
+        QCOMPARE(stateHash(opened->sheet), stateHash(saved->sheet));
+        QCOMPARE(opened->stepCount, saved->stepCount);
+        QCOMPARE(opened->params.phi, saved->params.phi);
+        QCOMPARE(opened->sheet.events.size(), saved->sheet.events.size());
+        QVERIFY(opened->rng.state() == saved->rng.state());
+        QVERIFY(!window->isModified());
+        QCOMPARE(window->currentFile(), nextFile);
+    }
+
+    void openingACorruptFileShowsTheErrorAndKeepsTheSheet() {
+        QTemporaryDir dir;
+        nextFile = dir.filePath(QStringLiteral("broken.paper"));
+        QFile f(nextFile);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(encodeWorld(*worldOf(*window)).left(777)); // truncated
+        f.close();
+        const auto before = worldOf(*window);
+        window->action("open")->trigger();
+        QVERIFY(lastError.contains(QStringLiteral("broken.paper")));
+        QVERIFY(lastError.contains(QStringLiteral("CBOR")));
+        const auto after = worldOf(*window);
+        QCOMPARE(stateHash(after->sheet), stateHash(before->sheet));
+        QVERIFY(window->currentFile().isEmpty());
+    }
+
+    void aClickPutsTheSphereWhereTheRayMeetsTheSheet() {
+        // The fresh press sheet lies flat at y = 0. Looking straight down (pitch 89.9°)
+        // from distance d at target t, the centre pixel's ray meets the sheet at t, and
+        // a pixel dx to the right meets it at t.x + d·tan(fov/2)·dx/(h/2) (to 1e-3 d).
+        Viewport* view = window->viewport();
+        OrbitCamera cam = *namedView("top");
+        cam.target = Vec3(0.02, 0.0, -0.03);
+        cam.distance = 0.5;
+        view->setCamera(cam);
+        const double R = window->panel()->toolRadius();
+        const int w = view->width(), h = view->height();
+
+        QTest::mouseMove(view, QPoint(w / 2, h / 2));
+        const double half = 0.5 / (h / 2.0) * cam.distance * std::tan(cam.fovY * M_PI / 360.0);
+        Vec3 expected(cam.target.x(), R, cam.target.z());
+        QVERIFY2((window->toolTarget() - expected).norm() < 2 * half + 1e-3 * cam.distance,
+                 qPrintable(QStringLiteral("%1 %2 %3")
+                                .arg(window->toolTarget().x())
+                                .arg(window->toolTarget().y())
+                                .arg(window->toolTarget().z())));
+
+        const int dx = 120;
+        QTest::mouseMove(view, QPoint(w / 2 + dx, h / 2));
+        expected.x() =
+            cam.target.x() + cam.distance * std::tan(cam.fovY * M_PI / 360.0) * dx / (h / 2.0);
+        QVERIFY2(
+            (window->toolTarget() - expected).norm() < 2 * half + 1e-3 * cam.distance,
+            qPrintable(QStringLiteral("%1 vs %2").arg(window->toolTarget().x()).arg(expected.x())));
+        // Pressed, the sphere reaches into the paper instead of resting on it.
+        QTest::mousePress(view, Qt::LeftButton, {}, QPoint(w / 2 + dx, h / 2));
+        QVERIFY(window->toolPressed());
+        QVERIFY(window->toolTarget().y() < R - 0.5 * R);
+        QTest::mouseRelease(view, Qt::LeftButton, {}, QPoint(w / 2 + dx, h / 2));
+    }
+
+    void switchingToKoreanTranslatesTheMenus() {
+        QCOMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("&File"));
+        QVERIFY(MainWindow::installLanguage(QStringLiteral("ko")));
+        QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("파일(&F)"));
+        QCOMPARE(window->action("open")->text(), QStringLiteral("열기(&O)…"));
+        QCOMPARE(window->action("undo")->text(), QStringLiteral("실행 취소(&U)"));
+        QVERIFY(MainWindow::installLanguage(QStringLiteral("de")));
+        QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("&Datei"));
+        QVERIFY(MainWindow::installLanguage(QStringLiteral("ja")));
+        QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("ファイル(&F)"));
+        QVERIFY(MainWindow::installLanguage(QStringLiteral("en")));
+        QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("&File"));
+    }
+
+    void closingAModifiedSheetAsks() {
+        int asked = 0;
+        window->askToSave = [&] {
+            ++asked;
+            return QMessageBox::Cancel;
+        };
+        window->panel()->phiSlider()->setValue(55);
+        QVERIFY(!window->close()); // Cancel keeps the window open
+        QCOMPARE(asked, 1);
+        window->askToSave = [] { return QMessageBox::Discard; };
+        QVERIFY(window->close());
+    }
+};
+
+QTEST_MAIN(TestEditor)
+#include "test_editor.moc"

@@ -1,0 +1,442 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de">
+<context>
+    <name>Legend</name>
+    <message>
+        <source>Break probability P (Eq. 10, per 1/60 s)</source>
+        <translation>Bruchwahrscheinlichkeit P (Gl. 10, je 1/60 s)</translation>
+    </message>
+    <message>
+        <source>Strain |l/l0 - 1|</source>
+        <translation>Dehnung |l/l0 - 1|</translation>
+    </message>
+    <message>
+        <source>breakable spring</source>
+        <translation>brechbare Feder</translation>
+    </message>
+    <message>
+        <source>unbreakable spring</source>
+        <translation>unzerbrechliche Feder</translation>
+    </message>
+    <message>
+        <source>crease (broken)</source>
+        <translation>Knick (gebrochen)</translation>
+    </message>
+    <message>
+        <source>hinge</source>
+        <translation>Scharnier</translation>
+    </message>
+    <message>
+        <source>broken in the last second</source>
+        <translation>in der letzten Sekunde gebrochen</translation>
+    </message>
+</context>
+<context>
+    <name>UndoCommands</name>
+    <message numerus="yes">
+        <source>Push (%n break(s) or fold(s))</source>
+        <translation>
+            <numerusform>Stoß (%n Bruch oder Falte)</numerusform>
+            <numerusform>Stoß (%n Brüche oder Falten)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Change %1</source>
+        <translation>%1 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>pf::MainWindow</name>
+    <message>
+        <source>PaperFold sheets (*.paper)</source>
+        <translation>PaperFold-Blätter (*.paper)</translation>
+    </message>
+    <message>
+        <source>Open Sheet</source>
+        <translation>Blatt öffnen</translation>
+    </message>
+    <message>
+        <source>Save Sheet</source>
+        <translation>Blatt speichern</translation>
+    </message>
+    <message>
+        <source>Export Image</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <source>Export Mesh</source>
+        <translation>Netz exportieren</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.ply *.glb)</source>
+        <translation>Netze (*.obj *.ply *.glb)</translation>
+    </message>
+    <message>
+        <source>PaperFold</source>
+        <translation>PaperFold</translation>
+    </message>
+    <message>
+        <source>The sheet has unsaved changes. Save them?</source>
+        <translation>Das Blatt hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <source>Size in pixels (width x height):</source>
+        <translation>Größe in Pixeln (Breite x Höhe):</translation>
+    </message>
+    <message>
+        <source>The simulation blew up at step %1 and was paused; the last good state is kept. Try more steps per second or the jacobi integrator.</source>
+        <translation>Die Simulation ist in Schritt %1 instabil geworden und wurde angehalten; der letzte gültige Zustand bleibt erhalten. Versuchen Sie mehr Schritte pro Sekunde oder den Integrator „jacobi“.</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <source>Ctrl+.</source>
+        <translation>Ctrl+.</translation>
+    </message>
+    <message>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
+    <message>
+        <source>About PaperFold</source>
+        <translation>Über PaperFold</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Crumple and fold virtual paper in real time, after Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Virtuelles Papier in Echtzeit zerknittern und falten, nach Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Press (sphere on a sheet)</source>
+        <translation>&amp;Drücken (Kugel auf einem Blatt)</translation>
+    </message>
+    <message>
+        <source>&amp;Drape (hanging sheet)</source>
+        <translation>&amp;Hängen (hängendes Blatt)</translation>
+    </message>
+    <message>
+        <source>&amp;Compress (edges pushed together)</source>
+        <translation>&amp;Stauchen (Kanten zusammengeschoben)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>Ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Image…</source>
+        <translation>&amp;Bild exportieren…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Mesh…</source>
+        <translation>&amp;Netz exportieren…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Play</source>
+        <translation>&amp;Abspielen</translation>
+    </message>
+    <message>
+        <source>Play or pause the simulation (Space)</source>
+        <translation>Simulation abspielen oder anhalten (Leertaste)</translation>
+    </message>
+    <message>
+        <source>S&amp;tep</source>
+        <translation>Einzel&amp;schritt</translation>
+    </message>
+    <message>
+        <source>Advance one step</source>
+        <translation>Einen Schritt weiter</translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation>&amp;Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Start the current scene again</source>
+        <translation>Die aktuelle Szene neu beginnen</translation>
+    </message>
+    <message>
+        <source>&amp;Spring kinds</source>
+        <translation>&amp;Federarten</translation>
+    </message>
+    <message>
+        <source>&amp;Break probability</source>
+        <translation>&amp;Bruchwahrscheinlichkeit</translation>
+    </message>
+    <message>
+        <source>S&amp;train</source>
+        <translation>&amp;Dehnung</translation>
+    </message>
+    <message>
+        <source>&amp;Recent breaks</source>
+        <translation>&amp;Letzte Brüche</translation>
+    </message>
+    <message>
+        <source>Simulation &amp;wireframe</source>
+        <translation>Simulations-&amp;Drahtgitter</translation>
+    </message>
+    <message>
+        <source>&amp;Top</source>
+        <translation>Von &amp;oben</translation>
+    </message>
+    <message>
+        <source>&amp;Front</source>
+        <translation>Von &amp;vorn</translation>
+    </message>
+    <message>
+        <source>&amp;Isometric</source>
+        <translation>&amp;Isometrisch</translation>
+    </message>
+    <message>
+        <source>Fit to &amp;sheet</source>
+        <translation>Auf das &amp;Blatt einpassen</translation>
+    </message>
+    <message>
+        <source>&amp;Mouse and Keys</source>
+        <translation>&amp;Maus und Tasten</translation>
+    </message>
+    <message>
+        <source>&amp;About PaperFold</source>
+        <translation>Ü&amp;ber PaperFold</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>Systemsprache</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Overlays</source>
+        <translation>&amp;Überlagerungen</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulation</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>Hauptwerkzeugleiste</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Verlauf</translation>
+    </message>
+    <message>
+        <source>&lt;new sheet&gt;</source>
+        <translation>&lt;neues Blatt&gt;</translation>
+    </message>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 fps</translation>
+    </message>
+    <message>
+        <source>step %1 µs</source>
+        <translation>Schritt %1 µs</translation>
+    </message>
+    <message>
+        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
+        <translation>%1 Knoten · %2 Federn · %3 Brüche · %4 Scharniere</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>%1[*] — PaperFold</source>
+        <translation>%1[*] — PaperFold</translation>
+    </message>
+    <message>
+        <source>Could not open the sheet: %1</source>
+        <translation>Das Blatt konnte nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>Could not save the sheet: %1</source>
+        <translation>Das Blatt konnte nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <source>the simulation did not answer</source>
+        <translation>die Simulation hat nicht geantwortet</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Could not export the image: %1</source>
+        <translation>Das Bild konnte nicht exportiert werden: %1</translation>
+    </message>
+    <message>
+        <source>Could not write %1</source>
+        <translation>%1 konnte nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>Choose a file ending in .obj, .ply or .glb</source>
+        <translation>Wählen Sie eine Datei mit der Endung .obj, .ply oder .glb</translation>
+    </message>
+    <message>
+        <source>Could not export the mesh: %1</source>
+        <translation>Das Netz konnte nicht exportiert werden: %1</translation>
+    </message>
+    <message>
+        <source>Mouse and Keys</source>
+        <translation>Maus und Tasten</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Move the mouse&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the sphere follows the cursor over the sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;push the sphere into the paper (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Maus bewegen&lt;/b&gt;&lt;/td&gt;&lt;td&gt;die Kugel folgt dem Zeiger über dem Blatt&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Linke Maustaste ziehen&lt;/b&gt;&lt;/td&gt;&lt;td&gt;die Kugel ins Papier drücken (ein Rückgängig-Schritt pro Strich)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Strg + Mausrad&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Kugelradius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Rechte Maustaste ziehen&lt;/b&gt;, Pfeiltasten&lt;/td&gt;&lt;td&gt;Kamera umkreisen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mittlere Maustaste ziehen&lt;/b&gt;, Umschalt + rechte Maustaste&lt;/td&gt;&lt;td&gt;verschieben&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mausrad&lt;/b&gt;, + und −&lt;/td&gt;&lt;td&gt;zoomen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Ansicht von oben, von vorn, isometrisch; auf das Blatt einpassen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Leertaste&lt;/b&gt;, &lt;b&gt;Strg+.&lt;/b&gt;, &lt;b&gt;Strg+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Abspielen/Anhalten, Einzelschritt, Zurücksetzen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Überlagerungen: Federarten, Bruchwahrscheinlichkeit, Dehnung, letzte Brüche, Drahtgitter&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Strg+Z&lt;/b&gt;, &lt;b&gt;Strg+Umschalt+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;rückgängig, wiederholen&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>pf::ParameterPanel</name>
+    <message>
+        <source>φ fragility</source>
+        <translation>φ Brüchigkeit</translation>
+    </message>
+    <message>
+        <source>Fragility φ scales the normal dot products of the break probability (Eq. 10). Larger φ: stiffer paper that breaks only where it is already curved; at 1 a flat region never breaks. Smaller φ: softer paper that crumples anywhere it is compressed.</source>
+        <translation>Die Brüchigkeit φ gewichtet die Skalarprodukte der Normalen in der Bruchwahrscheinlichkeit (Gl. 10). Größeres φ: steiferes Papier, das nur dort bricht, wo es schon gekrümmt ist; bei 1 bricht eine ebene Stelle nie. Kleineres φ: weicheres Papier, das überall knittert, wo es gestaucht wird.</translation>
+    </message>
+    <message>
+        <source>ψ recursive break</source>
+        <translation>ψ wiederholter Bruch</translation>
+    </message>
+    <message>
+        <source>ψ sets how far a new vertex moves out of the surface when a spring breaks (Eq. 11). At 1 the two halves keep the rest length and do not break again at once; smaller ψ leaves them compressed, so breaks repeat into finer crumples.</source>
+        <translation>ψ bestimmt, wie weit ein neuer Knoten aus der Fläche tritt, wenn eine Feder bricht (Gl. 11). Bei 1 behalten die beiden Hälften die Ruhelänge und brechen nicht sofort wieder; kleineres ψ lässt sie gestaucht, sodass sich Brüche zu feineren Knittern wiederholen.</translation>
+    </message>
+    <message>
+        <source>σ crumple sharpness</source>
+        <translation>σ Knitterschärfe</translation>
+    </message>
+    <message>
+        <source>σ shapes the subdivided surface that is drawn (§4.3): 0 keeps flat facets and sharp creases, larger values round them off. It does not change the simulation.</source>
+        <translation>σ formt die unterteilte Fläche, die gezeichnet wird (§4.3): 0 lässt ebene Facetten und scharfe Knicke, größere Werte runden sie ab. Die Simulation ändert sich dadurch nicht.</translation>
+    </message>
+    <message>
+        <source>Tool radius</source>
+        <translation>Werkzeugradius</translation>
+    </message>
+    <message>
+        <source>Radius of the sphere you push the paper with (Ctrl+wheel in the view).</source>
+        <translation>Radius der Kugel, mit der Sie das Papier drücken (Strg+Mausrad in der Ansicht).</translation>
+    </message>
+    <message>
+        <source> cm</source>
+        <translation> cm</translation>
+    </message>
+    <message>
+        <source>Advanced</source>
+        <translation>Erweitert</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>Integrator</translation>
+    </message>
+    <message>
+        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
+        <translation>jacobi: der näherungsweise implizite Schritt des Artikels (Gl. 6); jacobi-scalar: derselbe mit k·I-Blöcken; symplectic: explizit; backward-euler: der exakte implizite Schritt (langsam, die Referenz).</translation>
+    </message>
+    <message>
+        <source>Jacobi sweeps</source>
+        <translation>Jacobi-Durchläufe</translation>
+    </message>
+    <message>
+        <source>Steps per second</source>
+        <translation>Schritte pro Sekunde</translation>
+    </message>
+    <message>
+        <source>Stretch stiffness</source>
+        <translation>Dehnsteifigkeit</translation>
+    </message>
+    <message>
+        <source>Bending stiffness</source>
+        <translation>Biegesteifigkeit</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>Auflösung</translation>
+    </message>
+    <message>
+        <source>Vertices along the sheet&apos;s short side.</source>
+        <translation>Knoten entlang der kurzen Blattseite.</translation>
+    </message>
+    <message>
+        <source>Sheet size</source>
+        <translation>Blattgröße</translation>
+    </message>
+    <message>
+        <source>Resolution and size apply to the next New or Reset.</source>
+        <translation>Auflösung und Größe gelten beim nächsten Neu oder Zurücksetzen.</translation>
+    </message>
+</context>
+<context>
+    <name>pf::Viewport</name>
+    <message>
+        <source>OpenGL 3.3 is not available (missing %1)</source>
+        <translation>OpenGL 3.3 ist nicht verfügbar (%1 fehlt)</translation>
+    </message>
+</context>
+</TS>

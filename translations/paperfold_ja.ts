@@ -1,0 +1,441 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="ja">
+<context>
+    <name>Legend</name>
+    <message>
+        <source>Break probability P (Eq. 10, per 1/60 s)</source>
+        <translation>破断確率 P（式10、1/60 秒あたり）</translation>
+    </message>
+    <message>
+        <source>Strain |l/l0 - 1|</source>
+        <translation>ひずみ |l/l0 - 1|</translation>
+    </message>
+    <message>
+        <source>breakable spring</source>
+        <translation>破断可能なばね</translation>
+    </message>
+    <message>
+        <source>unbreakable spring</source>
+        <translation>破断しないばね</translation>
+    </message>
+    <message>
+        <source>crease (broken)</source>
+        <translation>折り目（破断済み）</translation>
+    </message>
+    <message>
+        <source>hinge</source>
+        <translation>ヒンジ</translation>
+    </message>
+    <message>
+        <source>broken in the last second</source>
+        <translation>直近1秒の破断</translation>
+    </message>
+</context>
+<context>
+    <name>UndoCommands</name>
+    <message numerus="yes">
+        <source>Push (%n break(s) or fold(s))</source>
+        <translation>
+            <numerusform>押し込み（破断・折り目 %n 件）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Change %1</source>
+        <translation>%1 を変更</translation>
+    </message>
+</context>
+<context>
+    <name>pf::MainWindow</name>
+    <message>
+        <source>PaperFold sheets (*.paper)</source>
+        <translation>PaperFold シート (*.paper)</translation>
+    </message>
+    <message>
+        <source>Open Sheet</source>
+        <translation>シートを開く</translation>
+    </message>
+    <message>
+        <source>Save Sheet</source>
+        <translation>シートを保存</translation>
+    </message>
+    <message>
+        <source>Export Image</source>
+        <translation>画像を書き出す</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 画像 (*.png)</translation>
+    </message>
+    <message>
+        <source>Export Mesh</source>
+        <translation>メッシュを書き出す</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.ply *.glb)</source>
+        <translation>メッシュ (*.obj *.ply *.glb)</translation>
+    </message>
+    <message>
+        <source>PaperFold</source>
+        <translation>PaperFold</translation>
+    </message>
+    <message>
+        <source>The sheet has unsaved changes. Save them?</source>
+        <translation>シートに未保存の変更があります。保存しますか？</translation>
+    </message>
+    <message>
+        <source>Size in pixels (width x height):</source>
+        <translation>ピクセル単位のサイズ（幅 x 高さ）：</translation>
+    </message>
+    <message>
+        <source>The simulation blew up at step %1 and was paused; the last good state is kept. Try more steps per second or the jacobi integrator.</source>
+        <translation>ステップ %1 でシミュレーションが発散したため一時停止しました。最後の正常な状態は保持されています。1秒あたりのステップ数を増やすか、jacobi 積分器を試してください。</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <source>Ctrl+.</source>
+        <translation>Ctrl+.</translation>
+    </message>
+    <message>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
+    <message>
+        <source>About PaperFold</source>
+        <translation>PaperFold について</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Crumple and fold virtual paper in real time, after Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;仮想の紙をリアルタイムでくしゃくしゃにし、折ります。Kang &amp;amp; Cho『A Simple and Effective Model for Interactive Paper Folding』に基づきます。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Press (sphere on a sheet)</source>
+        <translation>押す（シート上の球）(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Drape (hanging sheet)</source>
+        <translation>垂れ下がり（吊るしたシート）(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Compress (edges pushed together)</source>
+        <translation>圧縮（両端を押し寄せる）(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>開く(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>名前を付けて保存(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Image…</source>
+        <translation>画像を書き出す(&amp;I)…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Mesh…</source>
+        <translation>メッシュを書き出す(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>終了(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;Play</source>
+        <translation>再生(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Play or pause the simulation (Space)</source>
+        <translation>シミュレーションを再生/一時停止（Space）</translation>
+    </message>
+    <message>
+        <source>S&amp;tep</source>
+        <translation>ステップ(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Advance one step</source>
+        <translation>1ステップ進める</translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation>リセット(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Start the current scene again</source>
+        <translation>現在のシーンを最初から</translation>
+    </message>
+    <message>
+        <source>&amp;Spring kinds</source>
+        <translation>ばねの種類(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Break probability</source>
+        <translation>破断確率(&amp;B)</translation>
+    </message>
+    <message>
+        <source>S&amp;train</source>
+        <translation>ひずみ(&amp;T)</translation>
+    </message>
+    <message>
+        <source>&amp;Recent breaks</source>
+        <translation>最近の破断(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Simulation &amp;wireframe</source>
+        <translation>シミュレーションのワイヤーフレーム(&amp;W)</translation>
+    </message>
+    <message>
+        <source>&amp;Top</source>
+        <translation>上面(&amp;T)</translation>
+    </message>
+    <message>
+        <source>&amp;Front</source>
+        <translation>正面(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;Isometric</source>
+        <translation>等角(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Fit to &amp;sheet</source>
+        <translation>シートに合わせる(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Mouse and Keys</source>
+        <translation>マウスとキー(&amp;M)</translation>
+    </message>
+    <message>
+        <source>&amp;About PaperFold</source>
+        <translation>PaperFold について(&amp;A)</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>システムの言語</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>元に戻す(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>やり直し(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>ファイル(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>新規(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>最近使ったファイル(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>編集(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>表示(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Overlays</source>
+        <translation>オーバーレイ(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>言語(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>シミュレーション(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>ヘルプ(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>メインツールバー</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>パラメーター</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>履歴</translation>
+    </message>
+    <message>
+        <source>&lt;new sheet&gt;</source>
+        <translation>&lt;新しいシート&gt;</translation>
+    </message>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 fps</translation>
+    </message>
+    <message>
+        <source>step %1 µs</source>
+        <translation>ステップ %1 µs</translation>
+    </message>
+    <message>
+        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
+        <translation>頂点 %1 · ばね %2 · 破断 %3 · ヒンジ %4</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>無題</translation>
+    </message>
+    <message>
+        <source>%1[*] — PaperFold</source>
+        <translation>%1[*] — PaperFold</translation>
+    </message>
+    <message>
+        <source>Could not open the sheet: %1</source>
+        <translation>シートを開けませんでした：%1</translation>
+    </message>
+    <message>
+        <source>Could not save the sheet: %1</source>
+        <translation>シートを保存できませんでした：%1</translation>
+    </message>
+    <message>
+        <source>the simulation did not answer</source>
+        <translation>シミュレーションが応答しませんでした</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 を保存しました</translation>
+    </message>
+    <message>
+        <source>Could not export the image: %1</source>
+        <translation>画像を書き出せませんでした：%1</translation>
+    </message>
+    <message>
+        <source>Could not write %1</source>
+        <translation>%1 に書き込めませんでした</translation>
+    </message>
+    <message>
+        <source>Choose a file ending in .obj, .ply or .glb</source>
+        <translation>.obj、.ply、.glb で終わるファイルを選んでください</translation>
+    </message>
+    <message>
+        <source>Could not export the mesh: %1</source>
+        <translation>メッシュを書き出せませんでした：%1</translation>
+    </message>
+    <message>
+        <source>Mouse and Keys</source>
+        <translation>マウスとキー</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Move the mouse&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the sphere follows the cursor over the sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;push the sphere into the paper (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;マウスを動かす&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球がカーソルに合わせて紙の上を動きます&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;左ドラッグ&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球を紙に押し込みます（1ストロークで1回の取り消し単位）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + ホイール&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球の半径&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;右ドラッグ&lt;/b&gt;、矢印キー&lt;/td&gt;&lt;td&gt;カメラを回転&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;中ドラッグ&lt;/b&gt;、Shift + 右ドラッグ&lt;/td&gt;&lt;td&gt;パン&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;ホイール&lt;/b&gt;、+ と −&lt;/td&gt;&lt;td&gt;ズーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;、&lt;b&gt;2&lt;/b&gt;、&lt;b&gt;3&lt;/b&gt;、&lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;上面・正面・等角ビュー、シートに合わせる&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;、&lt;b&gt;Ctrl+.&lt;/b&gt;、&lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;再生/一時停止、1ステップ、リセット&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;オーバーレイ：ばねの種類、破断確率、ひずみ、最近の破断、ワイヤーフレーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;、&lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;元に戻す、やり直し&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>pf::ParameterPanel</name>
+    <message>
+        <source>φ fragility</source>
+        <translation>φ 脆さ</translation>
+    </message>
+    <message>
+        <source>Fragility φ scales the normal dot products of the break probability (Eq. 10). Larger φ: stiffer paper that breaks only where it is already curved; at 1 a flat region never breaks. Smaller φ: softer paper that crumples anywhere it is compressed.</source>
+        <translation>脆さ φ は破断確率（式10）の法線の内積に掛かる係数です。φ が大きいと紙は硬く、すでに曲がっている所でしか破断しません（1 では平らな所は決して破断しません）。φ が小さいと紙は柔らかく、圧縮された所ならどこでもしわになります。</translation>
+    </message>
+    <message>
+        <source>ψ recursive break</source>
+        <translation>ψ 再帰的破断</translation>
+    </message>
+    <message>
+        <source>ψ sets how far a new vertex moves out of the surface when a spring breaks (Eq. 11). At 1 the two halves keep the rest length and do not break again at once; smaller ψ leaves them compressed, so breaks repeat into finer crumples.</source>
+        <translation>ψ はばねが破断したとき新しい頂点が面から出る距離を決めます（式11）。1 では2つの半分が自然長を保ち、すぐには再び破断しません。ψ が小さいと半分が圧縮されたまま残り、破断が繰り返されてより細かいしわになります。</translation>
+    </message>
+    <message>
+        <source>σ crumple sharpness</source>
+        <translation>σ しわの鋭さ</translation>
+    </message>
+    <message>
+        <source>σ shapes the subdivided surface that is drawn (§4.3): 0 keeps flat facets and sharp creases, larger values round them off. It does not change the simulation.</source>
+        <translation>σ は描画される細分割面の形を決めます（§4.3）。0 では平らな面と鋭い折り目のまま、値を大きくすると丸みを帯びます。シミュレーションは変わりません。</translation>
+    </message>
+    <message>
+        <source>Tool radius</source>
+        <translation>ツールの半径</translation>
+    </message>
+    <message>
+        <source>Radius of the sphere you push the paper with (Ctrl+wheel in the view).</source>
+        <translation>紙を押す球の半径（ビュー内で Ctrl+ホイール）。</translation>
+    </message>
+    <message>
+        <source> cm</source>
+        <translation> cm</translation>
+    </message>
+    <message>
+        <source>Advanced</source>
+        <translation>詳細設定</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>積分器</translation>
+    </message>
+    <message>
+        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
+        <translation>jacobi：論文の近似陰的ステップ（式6）、jacobi-scalar：k·I ブロックを使う同じ手法、symplectic：陽的、backward-euler：厳密な陰的ステップ（低速、基準）。</translation>
+    </message>
+    <message>
+        <source>Jacobi sweeps</source>
+        <translation>ヤコビ反復回数</translation>
+    </message>
+    <message>
+        <source>Steps per second</source>
+        <translation>1秒あたりのステップ数</translation>
+    </message>
+    <message>
+        <source>Stretch stiffness</source>
+        <translation>伸びの剛性</translation>
+    </message>
+    <message>
+        <source>Bending stiffness</source>
+        <translation>曲げ剛性</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>解像度</translation>
+    </message>
+    <message>
+        <source>Vertices along the sheet&apos;s short side.</source>
+        <translation>シートの短辺に沿った頂点数。</translation>
+    </message>
+    <message>
+        <source>Sheet size</source>
+        <translation>シートの大きさ</translation>
+    </message>
+    <message>
+        <source>Resolution and size apply to the next New or Reset.</source>
+        <translation>解像度と大きさは次の「新規」または「リセット」で反映されます。</translation>
+    </message>
+</context>
+<context>
+    <name>pf::Viewport</name>
+    <message>
+        <source>OpenGL 3.3 is not available (missing %1)</source>
+        <translation>OpenGL 3.3 が利用できません（%1 がありません）</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,441 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="ko">
+<context>
+    <name>Legend</name>
+    <message>
+        <source>Break probability P (Eq. 10, per 1/60 s)</source>
+        <translation>파단 확률 P (식 10, 1/60초당)</translation>
+    </message>
+    <message>
+        <source>Strain |l/l0 - 1|</source>
+        <translation>변형률 |l/l0 - 1|</translation>
+    </message>
+    <message>
+        <source>breakable spring</source>
+        <translation>파단 가능한 스프링</translation>
+    </message>
+    <message>
+        <source>unbreakable spring</source>
+        <translation>파단되지 않는 스프링</translation>
+    </message>
+    <message>
+        <source>crease (broken)</source>
+        <translation>주름 (파단됨)</translation>
+    </message>
+    <message>
+        <source>hinge</source>
+        <translation>힌지</translation>
+    </message>
+    <message>
+        <source>broken in the last second</source>
+        <translation>최근 1초 안에 파단</translation>
+    </message>
+</context>
+<context>
+    <name>UndoCommands</name>
+    <message numerus="yes">
+        <source>Push (%n break(s) or fold(s))</source>
+        <translation>
+            <numerusform>누르기 (파단 또는 접힘 %n개)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Change %1</source>
+        <translation>%1 변경</translation>
+    </message>
+</context>
+<context>
+    <name>pf::MainWindow</name>
+    <message>
+        <source>PaperFold sheets (*.paper)</source>
+        <translation>PaperFold 시트 (*.paper)</translation>
+    </message>
+    <message>
+        <source>Open Sheet</source>
+        <translation>시트 열기</translation>
+    </message>
+    <message>
+        <source>Save Sheet</source>
+        <translation>시트 저장</translation>
+    </message>
+    <message>
+        <source>Export Image</source>
+        <translation>이미지 내보내기</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 이미지 (*.png)</translation>
+    </message>
+    <message>
+        <source>Export Mesh</source>
+        <translation>메시 내보내기</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.ply *.glb)</source>
+        <translation>메시 (*.obj *.ply *.glb)</translation>
+    </message>
+    <message>
+        <source>PaperFold</source>
+        <translation>PaperFold</translation>
+    </message>
+    <message>
+        <source>The sheet has unsaved changes. Save them?</source>
+        <translation>시트에 저장하지 않은 변경 사항이 있습니다. 저장할까요?</translation>
+    </message>
+    <message>
+        <source>Size in pixels (width x height):</source>
+        <translation>픽셀 크기 (너비 x 높이):</translation>
+    </message>
+    <message>
+        <source>The simulation blew up at step %1 and was paused; the last good state is kept. Try more steps per second or the jacobi integrator.</source>
+        <translation>%1 단계에서 시뮬레이션이 발산하여 일시 정지했습니다. 마지막 정상 상태는 유지됩니다. 초당 단계 수를 늘리거나 jacobi 적분기를 사용해 보세요.</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <source>Ctrl+.</source>
+        <translation>Ctrl+.</translation>
+    </message>
+    <message>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
+    <message>
+        <source>About PaperFold</source>
+        <translation>PaperFold 정보</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Crumple and fold virtual paper in real time, after Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;가상의 종이를 실시간으로 구기고 접습니다. Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;에 기반합니다.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Press (sphere on a sheet)</source>
+        <translation>누르기 (시트 위의 구)(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Drape (hanging sheet)</source>
+        <translation>늘어뜨리기 (매달린 시트)(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Compress (edges pushed together)</source>
+        <translation>압축 (양 끝을 밀기)(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>열기(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>저장(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>다른 이름으로 저장(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Image…</source>
+        <translation>이미지 내보내기(&amp;I)…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Mesh…</source>
+        <translation>메시 내보내기(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>끝내기(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;Play</source>
+        <translation>재생(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Play or pause the simulation (Space)</source>
+        <translation>시뮬레이션 재생 또는 일시 정지 (Space)</translation>
+    </message>
+    <message>
+        <source>S&amp;tep</source>
+        <translation>한 단계(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Advance one step</source>
+        <translation>한 단계 진행</translation>
+    </message>
+    <message>
+        <source>&amp;Reset</source>
+        <translation>초기화(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Start the current scene again</source>
+        <translation>현재 장면을 처음부터 다시 시작</translation>
+    </message>
+    <message>
+        <source>&amp;Spring kinds</source>
+        <translation>스프링 종류(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Break probability</source>
+        <translation>파단 확률(&amp;B)</translation>
+    </message>
+    <message>
+        <source>S&amp;train</source>
+        <translation>변형률(&amp;T)</translation>
+    </message>
+    <message>
+        <source>&amp;Recent breaks</source>
+        <translation>최근 파단(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Simulation &amp;wireframe</source>
+        <translation>시뮬레이션 와이어프레임(&amp;W)</translation>
+    </message>
+    <message>
+        <source>&amp;Top</source>
+        <translation>위(&amp;T)</translation>
+    </message>
+    <message>
+        <source>&amp;Front</source>
+        <translation>앞(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;Isometric</source>
+        <translation>등각(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Fit to &amp;sheet</source>
+        <translation>시트에 맞추기(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Mouse and Keys</source>
+        <translation>마우스와 키(&amp;M)</translation>
+    </message>
+    <message>
+        <source>&amp;About PaperFold</source>
+        <translation>PaperFold 정보(&amp;A)</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>시스템 언어</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>실행 취소(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>다시 실행(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>파일(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>새로 만들기(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>최근 파일(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>편집(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>보기(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Overlays</source>
+        <translation>오버레이(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>언어(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>시뮬레이션(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>도움말(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>기본 도구 모음</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>매개변수</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>기록</translation>
+    </message>
+    <message>
+        <source>&lt;new sheet&gt;</source>
+        <translation>&lt;새 시트&gt;</translation>
+    </message>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 fps</translation>
+    </message>
+    <message>
+        <source>step %1 µs</source>
+        <translation>단계 %1 µs</translation>
+    </message>
+    <message>
+        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
+        <translation>정점 %1 · 스프링 %2 · 파단 %3 · 힌지 %4</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>제목 없음</translation>
+    </message>
+    <message>
+        <source>%1[*] — PaperFold</source>
+        <translation>%1[*] — PaperFold</translation>
+    </message>
+    <message>
+        <source>Could not open the sheet: %1</source>
+        <translation>시트를 열 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <source>Could not save the sheet: %1</source>
+        <translation>시트를 저장할 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <source>the simulation did not answer</source>
+        <translation>시뮬레이션이 응답하지 않았습니다</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 저장됨</translation>
+    </message>
+    <message>
+        <source>Could not export the image: %1</source>
+        <translation>이미지를 내보낼 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <source>Could not write %1</source>
+        <translation>%1에 쓸 수 없습니다</translation>
+    </message>
+    <message>
+        <source>Choose a file ending in .obj, .ply or .glb</source>
+        <translation>.obj, .ply 또는 .glb로 끝나는 파일을 고르세요</translation>
+    </message>
+    <message>
+        <source>Could not export the mesh: %1</source>
+        <translation>메시를 내보낼 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <source>Mouse and Keys</source>
+        <translation>마우스와 키</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Move the mouse&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the sphere follows the cursor over the sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;push the sphere into the paper (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;마우스 이동&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구가 커서를 따라 종이 위를 움직입니다&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;왼쪽 드래그&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구를 종이에 눌러 넣습니다 (한 번의 스트로크가 한 번의 실행 취소 단위)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + 휠&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구 반지름&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;오른쪽 드래그&lt;/b&gt;, 화살표 키&lt;/td&gt;&lt;td&gt;카메라 회전&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;가운데 드래그&lt;/b&gt;, Shift + 오른쪽 드래그&lt;/td&gt;&lt;td&gt;이동&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;휠&lt;/b&gt;, + 와 −&lt;/td&gt;&lt;td&gt;확대/축소&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;위, 앞, 등각 보기; 종이에 맞추기&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;재생/일시 정지, 한 단계, 초기화&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;오버레이: 스프링 종류, 파단 확률, 변형률, 최근 파단, 와이어프레임&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;실행 취소, 다시 실행&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>pf::ParameterPanel</name>
+    <message>
+        <source>φ fragility</source>
+        <translation>φ 취성</translation>
+    </message>
+    <message>
+        <source>Fragility φ scales the normal dot products of the break probability (Eq. 10). Larger φ: stiffer paper that breaks only where it is already curved; at 1 a flat region never breaks. Smaller φ: softer paper that crumples anywhere it is compressed.</source>
+        <translation>취성 φ는 파단 확률(식 10)에서 법선 내적에 곱하는 값입니다. φ가 크면 종이가 단단해져 이미 휘어진 곳에서만 파단되며, 1이면 평평한 곳은 절대 파단되지 않습니다. φ가 작으면 종이가 부드러워져 압축되는 곳 어디서나 구겨집니다.</translation>
+    </message>
+    <message>
+        <source>ψ recursive break</source>
+        <translation>ψ 재귀 파단</translation>
+    </message>
+    <message>
+        <source>ψ sets how far a new vertex moves out of the surface when a spring breaks (Eq. 11). At 1 the two halves keep the rest length and do not break again at once; smaller ψ leaves them compressed, so breaks repeat into finer crumples.</source>
+        <translation>ψ는 스프링이 파단될 때 새 정점이 면 밖으로 얼마나 나오는지 정합니다(식 11). 1이면 두 반쪽이 정지 길이를 유지해 곧바로 다시 파단되지 않고, ψ가 작으면 압축된 채로 남아 파단이 반복되며 더 잘게 구겨집니다.</translation>
+    </message>
+    <message>
+        <source>σ crumple sharpness</source>
+        <translation>σ 주름 선명도</translation>
+    </message>
+    <message>
+        <source>σ shapes the subdivided surface that is drawn (§4.3): 0 keeps flat facets and sharp creases, larger values round them off. It does not change the simulation.</source>
+        <translation>σ는 그려지는 세분화 곡면의 모양을 정합니다(§4.3). 0이면 평평한 면과 날카로운 주름이 그대로이고, 값이 클수록 둥글게 다듬어집니다. 시뮬레이션은 바뀌지 않습니다.</translation>
+    </message>
+    <message>
+        <source>Tool radius</source>
+        <translation>도구 반지름</translation>
+    </message>
+    <message>
+        <source>Radius of the sphere you push the paper with (Ctrl+wheel in the view).</source>
+        <translation>종이를 누르는 구의 반지름 (보기에서 Ctrl+휠).</translation>
+    </message>
+    <message>
+        <source> cm</source>
+        <translation> cm</translation>
+    </message>
+    <message>
+        <source>Advanced</source>
+        <translation>고급</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>적분기</translation>
+    </message>
+    <message>
+        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
+        <translation>jacobi: 논문의 근사 암시적 단계(식 6), jacobi-scalar: k·I 블록을 쓰는 같은 방법, symplectic: 명시적, backward-euler: 정확한 암시적 단계(느림, 기준).</translation>
+    </message>
+    <message>
+        <source>Jacobi sweeps</source>
+        <translation>야코비 반복 횟수</translation>
+    </message>
+    <message>
+        <source>Steps per second</source>
+        <translation>초당 단계 수</translation>
+    </message>
+    <message>
+        <source>Stretch stiffness</source>
+        <translation>인장 강성</translation>
+    </message>
+    <message>
+        <source>Bending stiffness</source>
+        <translation>굽힘 강성</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>해상도</translation>
+    </message>
+    <message>
+        <source>Vertices along the sheet&apos;s short side.</source>
+        <translation>시트 짧은 변을 따라 놓인 정점 수.</translation>
+    </message>
+    <message>
+        <source>Sheet size</source>
+        <translation>시트 크기</translation>
+    </message>
+    <message>
+        <source>Resolution and size apply to the next New or Reset.</source>
+        <translation>해상도와 크기는 다음 새로 만들기나 초기화 때 적용됩니다.</translation>
+    </message>
+</context>
+<context>
+    <name>pf::Viewport</name>
+    <message>
+        <source>OpenGL 3.3 is not available (missing %1)</source>
+        <translation>OpenGL 3.3을 사용할 수 없습니다 (%1 없음)</translation>
+    </message>
+</context>
+</TS>

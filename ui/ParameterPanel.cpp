@@ -1,0 +1,260 @@
+#include "ParameterPanel.h"
+
+#include "Integrator.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QSlider>
+#include <QSpinBox>
+#include <QVBoxLayout>
+#include <cmath>
+
+namespace pf {
+
+ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    auto* grid = new QGridLayout;
+    layout->addLayout(grid);
+    phi_ = addSliderRow(grid, 0, 0.0, 1.0, 2, 100.0);
+    psi_ = addSliderRow(grid, 1, 0.0, 1.0, 2, 100.0);
+    sigma_ = addSliderRow(grid, 2, 0.0, 2.0, 2, 100.0);
+    radius_ = addSliderRow(grid, 3, 1.0, 10.0, 1, 10.0); // centimetres
+
+    advanced_ = new QGroupBox(this);
+    advanced_->setCheckable(true);
+    advanced_->setChecked(false);
+    auto* adv = new QGridLayout(advanced_);
+    integratorLabel_ = new QLabel(advanced_);
+    integrator_ = new QComboBox(advanced_);
+    for (const auto& name : integratorNames()) integrator_->addItem(QString::fromStdString(name));
+    iterationsLabel_ = new QLabel(advanced_);
+    iterations_ = new QSpinBox(advanced_);
+    iterations_->setRange(0, 50);
+    dtLabel_ = new QLabel(advanced_);
+    stepsPerSecond_ = new QSpinBox(advanced_);
+    stepsPerSecond_->setRange(60, 7680);
+    stepsPerSecond_->setSingleStep(60);
+    stiffnessLabel_ = new QLabel(advanced_);
+    stiffness_ = new QDoubleSpinBox(advanced_);
+    stiffness_->setRange(1.0, 1e5);
+    stiffness_->setDecimals(0);
+    stiffness_->setSuffix(QStringLiteral(" N/m"));
+    bendingLabel_ = new QLabel(advanced_);
+    bending_ = new QDoubleSpinBox(advanced_);
+    bending_->setRange(0.0, 1e4);
+    bending_->setDecimals(1);
+    bending_->setSuffix(QStringLiteral(" N/m"));
+    resolutionLabel_ = new QLabel(advanced_);
+    resolution_ = new QSpinBox(advanced_);
+    resolution_->setRange(3, 60);
+    resolution_->setValue(19);
+    sizeLabel_ = new QLabel(advanced_);
+    width_ = new QDoubleSpinBox(advanced_);
+    length_ = new QDoubleSpinBox(advanced_);
+    for (QDoubleSpinBox* b : {width_, length_}) {
+        b->setRange(5.0, 100.0);
+        b->setDecimals(1);
+        b->setSuffix(QStringLiteral(" cm"));
+    }
+    width_->setValue(21.0);
+    length_->setValue(29.7);
+    sheetNote_ = new QLabel(advanced_);
+    sheetNote_->setWordWrap(true);
+    int r = 0;
+    for (auto [label, field] :
+         std::initializer_list<std::pair<QLabel*, QWidget*>>{{integratorLabel_, integrator_},
+                                                             {iterationsLabel_, iterations_},
+                                                             {dtLabel_, stepsPerSecond_},
+                                                             {stiffnessLabel_, stiffness_},
+                                                             {bendingLabel_, bending_},
+                                                             {resolutionLabel_, resolution_}}) {
+        adv->addWidget(label, r, 0);
+        adv->addWidget(field, r++, 1, 1, 2);
+    }
+    adv->addWidget(sizeLabel_, r, 0);
+    adv->addWidget(width_, r, 1);
+    adv->addWidget(length_, r++, 2);
+    adv->addWidget(sheetNote_, r, 0, 1, 3);
+    for (QWidget* w : advanced_->findChildren<QWidget*>()) w->setVisible(false);
+    connect(advanced_, &QGroupBox::toggled, this, [this](bool on) {
+        for (QWidget* w : advanced_->findChildren<QWidget*>()) w->setVisible(on);
+    });
+    layout->addWidget(advanced_);
+    layout->addStretch();
+
+    connect(integrator_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+        params_.integrator = name.toStdString();
+        emitEdit(QStringLiteral("integrator"));
+    });
+    connect(iterations_, &QSpinBox::valueChanged, this, [this](int k) {
+        params_.iterations = k;
+        emitEdit(QStringLiteral("iterations"));
+    });
+    connect(stepsPerSecond_, &QSpinBox::valueChanged, this, [this](int n) {
+        params_.dt = 1.0 / n;
+        emitEdit(QStringLiteral("dt"));
+    });
+    connect(stiffness_, &QDoubleSpinBox::valueChanged, this, [this](double k) {
+        params_.stiffness[static_cast<int>(SpringKind::Structural)] = k;
+        params_.stiffness[static_cast<int>(SpringKind::Crease)] = k;
+        emitEdit(QStringLiteral("stiffness"));
+    });
+    connect(bending_, &QDoubleSpinBox::valueChanged, this, [this](double k) {
+        params_.stiffness[static_cast<int>(SpringKind::Bending)] = k;
+        params_.stiffness[static_cast<int>(SpringKind::Hinge)] = k;
+        emitEdit(QStringLiteral("bending"));
+    });
+    retranslate();
+}
+
+ParameterPanel::SliderRow ParameterPanel::addSliderRow(QGridLayout* grid, int row, double min,
+                                                       double max, int decimals, double scale) {
+    SliderRow r;
+    r.scale = scale;
+    r.label = new QLabel(this);
+    r.slider = new QSlider(Qt::Horizontal, this);
+    r.slider->setRange(static_cast<int>(std::lround(min * scale)),
+                       static_cast<int>(std::lround(max * scale)));
+    r.spin = new QDoubleSpinBox(this);
+    r.spin->setRange(min, max);
+    r.spin->setDecimals(decimals);
+    r.spin->setSingleStep(1.0 / scale);
+    grid->addWidget(r.label, row, 0);
+    grid->addWidget(r.slider, row, 1);
+    grid->addWidget(r.spin, row, 2);
+    const int index = row;
+    connect(r.slider, &QSlider::sliderPressed, this, [this] {
+        sliderDown_ = true;
+        ++drag_;
+    });
+    connect(r.slider, &QSlider::sliderReleased, this, [this] { sliderDown_ = false; });
+    connect(r.slider, &QSlider::valueChanged, this, [this, r, index](int v) {
+        if (updating_) return;
+        updating_ = true;
+        r.spin->setValue(v / r.scale);
+        updating_ = false;
+        if (!sliderDown_) ++drag_; // a click or a key on the slider is a gesture of its own
+        rowEdited(index, v / r.scale);
+    });
+    connect(r.spin, &QDoubleSpinBox::valueChanged, this, [this, r, index](double v) {
+        if (updating_) return;
+        updating_ = true;
+        r.slider->setValue(static_cast<int>(std::lround(v * r.scale)));
+        updating_ = false;
+        ++drag_;
+        rowEdited(index, v);
+    });
+    return r;
+}
+
+void ParameterPanel::rowEdited(int row, double value) {
+    switch (row) {
+    case 0:
+        params_.phi = value;
+        emitEdit(QStringLiteral("phi"));
+        break;
+    case 1:
+        params_.psi = value;
+        emitEdit(QStringLiteral("psi"));
+        break;
+    case 2:
+        params_.sigma = value;
+        emitEdit(QStringLiteral("sigma"));
+        break;
+    default:
+        emit toolRadiusChanged(value / 100.0);
+        break; // the row is in centimetres
+    }
+}
+
+void ParameterPanel::emitEdit(const QString& what) {
+    if (updating_) return;
+    emit paramsEdited(params_, what, drag_);
+}
+
+void ParameterPanel::showParams(const SimParams& params) {
+    updating_ = true;
+    params_ = params;
+    phi_.spin->setValue(params.phi);
+    phi_.slider->setValue(static_cast<int>(std::lround(params.phi * phi_.scale)));
+    psi_.spin->setValue(params.psi);
+    psi_.slider->setValue(static_cast<int>(std::lround(params.psi * psi_.scale)));
+    sigma_.spin->setValue(params.sigma);
+    sigma_.slider->setValue(static_cast<int>(std::lround(params.sigma * sigma_.scale)));
+    integrator_->setCurrentText(QString::fromStdString(params.integrator));
+    iterations_->setValue(params.iterations);
+    stepsPerSecond_->setValue(static_cast<int>(std::lround(1.0 / params.dt)));
+    stiffness_->setValue(params.stiffnessOf(SpringKind::Structural));
+    bending_->setValue(params.stiffnessOf(SpringKind::Bending));
+    updating_ = false;
+}
+
+double ParameterPanel::toolRadius() const {
+    return radius_.spin->value() / 100.0;
+}
+
+void ParameterPanel::setToolRadius(double metres) {
+    updating_ = true;
+    radius_.spin->setValue(metres * 100.0);
+    radius_.slider->setValue(static_cast<int>(std::lround(metres * 100.0 * radius_.scale)));
+    updating_ = false;
+}
+
+int ParameterPanel::resolution() const {
+    return resolution_->value();
+}
+double ParameterPanel::sheetWidth() const {
+    return width_->value() / 100.0;
+}
+double ParameterPanel::sheetLength() const {
+    return length_->value() / 100.0;
+}
+
+void ParameterPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(event);
+}
+
+void ParameterPanel::retranslate() {
+    phi_.label->setText(tr("φ fragility"));
+    phi_.label->setToolTip(tr("Fragility φ scales the normal dot products of the break probability "
+                              "(Eq. 10). Larger φ: stiffer paper that breaks only where it is "
+                              "already curved; at 1 a flat region never breaks. Smaller φ: softer "
+                              "paper that crumples anywhere it is compressed."));
+    psi_.label->setText(tr("ψ recursive break"));
+    psi_.label->setToolTip(tr("ψ sets how far a new vertex moves out of the surface when a spring "
+                              "breaks (Eq. 11). At 1 the two halves keep the rest length and do "
+                              "not break again at once; smaller ψ leaves them compressed, so "
+                              "breaks repeat into finer crumples."));
+    sigma_.label->setText(tr("σ crumple sharpness"));
+    sigma_.label->setToolTip(tr("σ shapes the subdivided surface that is drawn (§4.3): 0 keeps "
+                                "flat facets and sharp creases, larger values round them off. It "
+                                "does not change the simulation."));
+    radius_.label->setText(tr("Tool radius"));
+    radius_.label->setToolTip(
+        tr("Radius of the sphere you push the paper with (Ctrl+wheel in the view)."));
+    radius_.spin->setSuffix(tr(" cm"));
+    for (auto* row : {&phi_, &psi_, &sigma_, &radius_}) {
+        row->slider->setToolTip(row->label->toolTip());
+        row->spin->setToolTip(row->label->toolTip());
+    }
+    advanced_->setTitle(tr("Advanced"));
+    integratorLabel_->setText(tr("Integrator"));
+    integrator_->setToolTip(tr("jacobi: the paper's approximate implicit step (Eq. 6); "
+                               "jacobi-scalar: the same with k·I blocks; symplectic: explicit; "
+                               "backward-euler: the exact implicit step (slow, the reference)."));
+    iterationsLabel_->setText(tr("Jacobi sweeps"));
+    dtLabel_->setText(tr("Steps per second"));
+    stiffnessLabel_->setText(tr("Stretch stiffness"));
+    bendingLabel_->setText(tr("Bending stiffness"));
+    resolutionLabel_->setText(tr("Resolution"));
+    resolution_->setToolTip(tr("Vertices along the sheet's short side."));
+    sizeLabel_->setText(tr("Sheet size"));
+    sheetNote_->setText(tr("Resolution and size apply to the next New or Reset."));
+}
+
+} // namespace pf

@@ -1,0 +1,82 @@
+#pragma once
+
+#include "Params.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QGridLayout;
+class QGroupBox;
+class QLabel;
+class QSlider;
+class QSpinBox;
+
+namespace pf {
+
+// The knobs an artist turns: φ, ψ, σ and the tool radius up front; integrator,
+// sweeps, time step, stiffness and the sheet's size and resolution under Advanced.
+class ParameterPanel : public QWidget {
+    Q_OBJECT
+
+  public:
+    explicit ParameterPanel(QWidget* parent = nullptr);
+
+    // Shows `params` without emitting anything.
+    void showParams(const SimParams& params);
+    double toolRadius() const;
+    void setToolRadius(double metres);
+    int resolution() const;
+    double sheetWidth() const;  // metres
+    double sheetLength() const; // metres
+
+    // The widgets, for tests that drive them.
+    QSlider* phiSlider() const { return phi_.slider; }
+    QSlider* psiSlider() const { return psi_.slider; }
+    QSlider* sigmaSlider() const { return sigma_.slider; }
+    QComboBox* integratorBox() const { return integrator_; }
+    QSpinBox* iterationsBox() const { return iterations_; }
+
+  signals:
+    // A user edit. `drag` numbers a slider drag: edits with the same drag number
+    // belong to one gesture (and one undo step).
+    void paramsEdited(const pf::SimParams& params, const QString& what, int drag);
+    void toolRadiusChanged(double metres);
+
+  protected:
+    void changeEvent(QEvent* event) override;
+
+  private:
+    struct SliderRow {
+        QLabel* label = nullptr;
+        QSlider* slider = nullptr;
+        QDoubleSpinBox* spin = nullptr;
+        double scale = 100.0; // slider units per value unit
+    };
+    SliderRow addSliderRow(QGridLayout* grid, int row, double min, double max, int decimals,
+                           double scale);
+    void retranslate();
+    void emitEdit(const QString& what);
+    void rowEdited(int row, double value);
+
+    SimParams params_;
+    SliderRow phi_, psi_, sigma_, radius_;
+    QGroupBox* advanced_ = nullptr;
+    QLabel *integratorLabel_ = nullptr, *iterationsLabel_ = nullptr, *dtLabel_ = nullptr,
+           *stiffnessLabel_ = nullptr, *bendingLabel_ = nullptr, *resolutionLabel_ = nullptr,
+           *sizeLabel_ = nullptr;
+    QComboBox* integrator_ = nullptr;
+    QSpinBox* iterations_ = nullptr;
+    QSpinBox* stepsPerSecond_ = nullptr;
+    QDoubleSpinBox* stiffness_ = nullptr;
+    QDoubleSpinBox* bending_ = nullptr;
+    QSpinBox* resolution_ = nullptr;
+    QDoubleSpinBox* width_ = nullptr;
+    QDoubleSpinBox* length_ = nullptr;
+    QLabel* sheetNote_ = nullptr;
+    int drag_ = 0;
+    bool sliderDown_ = false;
+    bool updating_ = false;
+};
+
+} // namespace pf

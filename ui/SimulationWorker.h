@@ -1,0 +1,56 @@
+#pragma once
+
+#include "Simulation.h"
+
+#include <QObject>
+#include <QTimer>
+#include <vector>
+
+namespace pf {
+
+class SimulationThread;
+
+// Owns the Simulation; lives on the simulation thread. Every slot runs there,
+// between frames, so commands never interleave with a step.
+class SimulationWorker : public QObject {
+    Q_OBJECT
+
+  public:
+    SimulationWorker(World world, SimulationThread* owner);
+
+    static constexpr double kFrameSeconds = 1.0 / 60.0;
+
+    void start();
+    void setPlaying(bool playing);
+    void stepOnce();
+    void setParams(const SimParams& params);
+    void replaceWorld(const World& world);
+    void setTool(const Vec3& target, double radius, bool visible, bool pressed);
+    void undoStroke(int stroke);
+    void redoStroke(int stroke);
+    void copyWorld(quint64 requestId);
+
+  private:
+    // What a stroke did, enough to undo it and do it again.
+    struct StrokeEvent {
+        Index event = kNone;
+        EventKind kind = EventKind::Break;
+        Index edge = kNone;
+        double hingeRest = 0.0;
+    };
+    void frame();
+    void advance(int steps);
+    void publish(double stepSeconds);
+    void endStroke();
+
+    Simulation sim_;
+    SimulationThread* owner_;
+    QTimer timer_;
+    bool playing_ = true;
+    Vec3 toolTarget_ = Vec3::Zero();
+    bool pressed_ = false;
+    Index strokeStart_ = 0;
+    std::vector<std::vector<StrokeEvent>> strokes_;
+};
+
+} // namespace pf
