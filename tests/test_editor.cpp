@@ -51,6 +51,14 @@ QPoint viewportCentre(MainWindow& w) {
     return w.viewport()->rect().center();
 }
 
+// Delivered synchronously: QTest::mouseMove goes through the cursor position and can
+// arrive late on a loaded machine.
+void moveMouse(QWidget* view, const QPoint& p, Qt::MouseButtons buttons = Qt::NoButton) {
+    QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, buttons,
+                     Qt::NoModifier);
+    QApplication::sendEvent(view, &move);
+}
+
 } // namespace
 
 class TestEditor : public QObject {
@@ -136,14 +144,12 @@ class TestEditor : public QObject {
         // One stroke: press in the middle of the sheet, step the (paused) simulation
         // while dragging across, release.
         QPoint p = viewportCentre(*window) + QPoint(-60, 0);
-        QTest::mouseMove(view, p);
+        moveMouse(view, p);
         QTest::mousePress(view, Qt::LeftButton, {}, p);
         for (int k = 0; k < 240; ++k) {
             if (k % 8 == 0) {
                 p += QPoint(4, 1);
-                QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton,
-                                 Qt::LeftButton, Qt::NoModifier);
-                QApplication::sendEvent(view, &move);
+                moveMouse(view, p, Qt::LeftButton);
             }
             window->simulation()->stepOnce();
         }
@@ -226,7 +232,7 @@ class TestEditor : public QObject {
         const double R = window->panel()->toolRadius();
         const int w = view->width(), h = view->height();
 
-        QTest::mouseMove(view, QPoint(w / 2, h / 2));
+        moveMouse(view, QPoint(w / 2, h / 2));
         const double half = 0.5 / (h / 2.0) * cam.distance * std::tan(cam.fovY * M_PI / 360.0);
         Vec3 expected(cam.target.x(), R, cam.target.z());
         QVERIFY2((window->toolTarget() - expected).norm() < 2 * half + 1e-3 * cam.distance,
@@ -236,7 +242,7 @@ class TestEditor : public QObject {
                                 .arg(window->toolTarget().z())));
 
         const int dx = 120;
-        QTest::mouseMove(view, QPoint(w / 2 + dx, h / 2));
+        moveMouse(view, QPoint(w / 2 + dx, h / 2));
         expected.x() =
             cam.target.x() + cam.distance * std::tan(cam.fovY * M_PI / 360.0) * dx / (h / 2.0);
         QVERIFY2(
