@@ -1,6 +1,7 @@
 #include "CommandLine.h"
 
 #include <QStringList>
+#include <QTextStream>
 #include <cmath>
 
 namespace pf::cli {
@@ -47,6 +48,16 @@ void rejectExtraArguments(const QCommandLineParser& parser, int allowed) {
     const QStringList extra = parser.positionalArguments().mid(allowed);
     if (!extra.isEmpty())
         throw UsageError{QStringLiteral("unexpected argument '%1'").arg(extra.first())};
+}
+
+bool parseCommand(QCommandLineParser& parser, const QStringList& arguments) {
+    if (!parser.parse(arguments)) throw UsageError{parser.errorText()};
+    if (parser.isSet(QStringLiteral("help"))) {
+        QTextStream(stdout) << parser.helpText();
+        return false;
+    }
+    rejectExtraArguments(parser, 1);
+    return true;
 }
 
 } // namespace pf::cli

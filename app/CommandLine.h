@@ -22,4 +22,8 @@ std::optional<std::uint64_t> seedOption(const QCommandLineParser& parser, const 
 // Throws UsageError for positional arguments beyond the subcommand itself.
 void rejectExtraArguments(const QCommandLineParser& parser, int allowed);
 
+// Parses a subcommand's arguments: throws UsageError for unknown options or extra
+// arguments; prints the help and returns false for --help.
+bool parseCommand(QCommandLineParser& parser, const QStringList& arguments);
+
 } // namespace pf::cli

@@ -27,12 +27,7 @@ int runExport(const QStringList& arguments) {
          QStringLiteral("level")},
         {QStringLiteral("no-normals"), QStringLiteral("Leave vertex normals out.")},
     });
-    if (!parser.parse(arguments)) throw UsageError{parser.errorText()};
-    if (parser.isSet(QStringLiteral("help"))) {
-        QTextStream(stdout) << parser.helpText();
-        return 0;
-    }
-    rejectExtraArguments(parser, 1);
+    if (!parseCommand(parser, arguments)) return 0;
     if (!parser.isSet(QStringLiteral("output")))
         throw UsageError{QStringLiteral("--output is required (a .obj, .ply or .glb file)")};
     const QString output = parser.value(QStringLiteral("output"));

@@ -22,20 +22,13 @@ namespace {
 // snapshot's bounding sphere.
 OrbitCamera frameCamera(const SheetSnapshot& snap, const QCommandLineParser& parser,
                         double aspect) {
-    Vec3 lo = snap.x.front(), hi = lo;
-    for (const Vec3& p : snap.x) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    const Vec3 center = 0.5 * (lo + hi);
-    const double radius = std::max(0.5 * (hi - lo).norm(), 0.05);
     const QString viewName = parser.value(QStringLiteral("view"));
     std::optional<OrbitCamera> named = namedView(viewName.toStdString());
     if (!named)
         throw UsageError{
             QStringLiteral("--view: unknown view '%1' (known: top, front, iso)").arg(viewName)};
     OrbitCamera camera = *named;
-    camera.fit(center, radius, aspect);
+    camera.fitPoints(snap.x, aspect);
     if (parser.isSet(QStringLiteral("camera"))) {
         const QStringList parts = parser.value(QStringLiteral("camera")).split(QLatin1Char(','));
         bool ok[3] = {false, false, false};
@@ -101,12 +94,7 @@ int runRender(const QStringList& arguments) {
          QStringLiteral("Largest fraction of differing pixels that still matches (default 0.01)."),
          QStringLiteral("t")},
     });
-    if (!parser.parse(arguments)) throw UsageError{parser.errorText()};
-    if (parser.isSet(QStringLiteral("help"))) {
-        QTextStream(stdout) << parser.helpText();
-        return 0;
-    }
-    rejectExtraArguments(parser, 1);
+    if (!parseCommand(parser, arguments)) return 0;
     if (!parser.isSet(QStringLiteral("output")))
         throw UsageError{QStringLiteral("--output is required")};
     const QString output = parser.value(QStringLiteral("output"));

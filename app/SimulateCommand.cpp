@@ -59,12 +59,7 @@ int runSimulate(const QStringList& arguments) {
          QStringLiteral("file")},
         {QStringLiteral("stats"), QStringLiteral("Print statistics as one JSON object.")},
     });
-    if (!parser.parse(arguments)) throw UsageError{parser.errorText()};
-    if (parser.isSet(QStringLiteral("help"))) {
-        QTextStream(stdout) << parser.helpText();
-        return 0;
-    }
-    rejectExtraArguments(parser, 1);
+    if (!parseCommand(parser, arguments)) return 0;
     World world = worldFromOptions(parser);
     const long long steps =
         integerOption(parser, QStringLiteral("steps"), 0, 1'000'000'000).value_or(600);

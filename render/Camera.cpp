@@ -72,6 +72,16 @@ void OrbitCamera::fit(const Vec3& center, double radius, double aspect) {
     distance = 1.08 * radius / std::sin(std::min(halfV, halfH));
 }
 
+void OrbitCamera::fitPoints(const std::vector<Vec3>& points, double aspect) {
+    if (points.empty()) return;
+    Vec3 lo = points.front(), hi = lo;
+    for (const Vec3& p : points) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    fit(0.5 * (lo + hi), std::max(0.5 * (hi - lo).norm(), 0.05), aspect);
+}
+
 OrbitCamera::Ray OrbitCamera::rayThroughPixel(double px, double py, int width, int height) const {
     const double aspect = static_cast<double>(width) / height;
     const double ndcX = 2.0 * px / width - 1.0;

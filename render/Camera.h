@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 namespace pf {
 
@@ -32,6 +33,8 @@ struct OrbitCamera {
     void zoom(double factor);
     // Sets the distance so that a sphere of `radius` around `center` fills the view.
     void fit(const Vec3& center, double radius, double aspect);
+    // fit() around the bounding sphere of `points` (at least 5 cm across).
+    void fitPoints(const std::vector<Vec3>& points, double aspect);
 
     // The world-space ray through a pixel (x right, y down, in a width × height view).
     struct Ray {

@@ -94,13 +94,7 @@ bool SheetRenderer::initialize(const GlFunctions& gl, QString* error) {
     gl.BindVertexArray(surfaceVao_);
     gl.BindBuffer(GL_ARRAY_BUFFER, surfaceVbo_);
     gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, surfaceEbo_);
-    const GLsizei stride = kSurfaceFloats * sizeof(float);
-    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-    gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
-                           reinterpret_cast<void*>(3 * sizeof(float)));
-    gl.VertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride,
-                           reinterpret_cast<void*>(6 * sizeof(float)));
-    for (GLuint a = 0; a < 3; ++a) gl.EnableVertexAttribArray(a);
+    setSurfaceLayout();
 
     gl.GenVertexArrays(1, &linesVao_);
     gl.GenBuffers(1, &linesVbo_);
@@ -127,6 +121,17 @@ bool SheetRenderer::initialize(const GlFunctions& gl, QString* error) {
     makeSphere();
     gl.BindVertexArray(0);
     return true;
+}
+
+void SheetRenderer::setSurfaceLayout() {
+    const GlFunctions& gl = *gl_;
+    const GLsizei stride = kSurfaceFloats * sizeof(float);
+    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+    gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
+                           reinterpret_cast<void*>(3 * sizeof(float)));
+    gl.VertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride,
+                           reinterpret_cast<void*>(6 * sizeof(float)));
+    for (GLuint a = 0; a < 3; ++a) gl.EnableVertexAttribArray(a);
 }
 
 void SheetRenderer::makeSphere() {
@@ -159,13 +164,7 @@ void SheetRenderer::makeSphere() {
     gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphereEbo_);
     gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(idx.size() * 4), idx.data(),
                   GL_STATIC_DRAW);
-    const GLsizei stride = kSurfaceFloats * sizeof(float);
-    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-    gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
-                           reinterpret_cast<void*>(3 * sizeof(float)));
-    gl.VertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride,
-                           reinterpret_cast<void*>(6 * sizeof(float)));
-    for (GLuint a = 0; a < 3; ++a) gl.EnableVertexAttribArray(a);
+    setSurfaceLayout();
 }
 
 void SheetRenderer::release() {

@@ -37,6 +37,8 @@ class SheetRenderer {
     void uploadSurface(const SheetSnapshot& snap, const RenderOptions& options);
     void buildLines(const SheetSnapshot& snap, const RenderOptions& options);
     void makeSphere();
+    // Position, normal, colour of the surface and sphere buffers (the bound VAO and VBO).
+    void setSurfaceLayout();
     void setMatrix(GLuint prog, const char* name, const Mat4& m);
     void setVec3(GLuint prog, const char* name, const float* v);
 

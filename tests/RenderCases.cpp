@@ -37,13 +37,8 @@ SheetSnapshot snapshotFor(const RenderCase& c) {
 }
 
 OrbitCamera cameraFor(const RenderCase& c, const SheetSnapshot& snap, double aspect) {
-    Vec3 lo = snap.x.front(), hi = lo;
-    for (const Vec3& p : snap.x) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
     OrbitCamera cam = namedView(*c.view ? c.view : "iso").value();
-    cam.fit(0.5 * (lo + hi), std::max(0.5 * (hi - lo).norm(), 0.05), aspect);
+    cam.fitPoints(snap.x, aspect);
     if (!*c.view) {
         cam.yaw = c.yaw;
         cam.pitch = c.pitch;

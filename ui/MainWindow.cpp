@@ -581,14 +581,9 @@ void MainWindow::updateRecentMenu() {
 void MainWindow::fitCamera() {
     auto snap = viewport_->snapshot();
     if (!snap || snap->x.empty()) return;
-    Vec3 lo = snap->x.front(), hi = lo;
-    for (const Vec3& p : snap->x) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
     OrbitCamera c = viewport_->camera();
-    c.fit(0.5 * (lo + hi), std::max(0.5 * (hi - lo).norm(), 0.05),
-          double(std::max(1, viewport_->width())) / std::max(1, viewport_->height()));
+    c.fitPoints(snap->x,
+                double(std::max(1, viewport_->width())) / std::max(1, viewport_->height()));
     viewport_->setCamera(c);
 }
 

@@ -25,13 +25,8 @@ double median(std::vector<double> v) {
 }
 
 OrbitCamera fitted(const SheetSnapshot& s, double aspect) {
-    Vec3 lo = s.x.front(), hi = lo;
-    for (const Vec3& p : s.x) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
     OrbitCamera c = *namedView("iso");
-    c.fit(0.5 * (lo + hi), 0.5 * (hi - lo).norm(), aspect);
+    c.fitPoints(s.x, aspect);
     return c;
 }
 
