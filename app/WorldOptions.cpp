@@ -43,6 +43,9 @@ void addWorldOptions(QCommandLineParser& parser) {
         {QStringLiteral("iterations"), QStringLiteral("Jacobi sweeps after the first estimate."),
          QStringLiteral("k")},
         {QStringLiteral("dt"), QStringLiteral("Time step in seconds."), QStringLiteral("h")},
+        {QStringLiteral("gravity-outside-filter"),
+         QStringLiteral("Integrate gravity outside the implicit filter (the editor's default; "
+                        "the paper's Eq. 6 divides it by W).")},
     });
 }
 
@@ -81,6 +84,7 @@ World worldFromOptions(const QCommandLineParser& parser) {
     if (auto v = realOption(parser, QStringLiteral("dt"), 1e-7, 0.1)) p.dt = *v;
     if (auto v = integerOption(parser, QStringLiteral("iterations"), 0, 1000))
         p.iterations = static_cast<int>(*v);
+    if (parser.isSet(QStringLiteral("gravity-outside-filter"))) p.gravityOutsideFilter = true;
     if (parser.isSet(QStringLiteral("integrator"))) {
         const QString name = parser.value(QStringLiteral("integrator"));
         if (!makeIntegrator(name.toStdString()))

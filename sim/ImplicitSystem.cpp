@@ -86,11 +86,16 @@ void jacobiSweep(const Sheet& sheet, const ImplicitSystem& sys, const std::vecto
         out[i] = pinned[i] ? Vec3::Zero() : Vec3(sys.diagInv[i] * out[i]);
 }
 
-void solveJacobi(const Sheet& sheet, const ImplicitSystem& sys, int sweeps, std::vector<Vec3>& dv,
-                 std::vector<Vec3>& scratch) {
+void solveJacobi(const Sheet& sheet, const ImplicitSystem& sys, int sweeps,
+                 std::vector<Vec3>& dv, std::vector<Vec3>& scratch, const Vec3* start) {
     const Index nv = sheet.verts.size();
     dv.resize(nv);
-    for (Index i = 0; i < nv; ++i) dv[i] = sys.diagInv[i] * sys.rhs[i];
+    if (start) {
+        for (Index i = 0; i < nv; ++i) dv[i] = sheet.verts.pinned[i] ? Vec3::Zero() : *start;
+        ++sweeps; // the initial estimate is a sweep from the guess
+    } else {
+        for (Index i = 0; i < nv; ++i) dv[i] = sys.diagInv[i] * sys.rhs[i];
+    }
     for (int k = 0; k < sweeps; ++k) {
         jacobiSweep(sheet, sys, dv, scratch);
         dv.swap(scratch);

@@ -43,8 +43,10 @@ struct ImplicitSystem {
 void jacobiSweep(const Sheet& sheet, const ImplicitSystem& sys, const std::vector<Vec3>& in,
                  std::vector<Vec3>& out);
 
-// Eq. 6 with `sweeps` sweeps after the initial estimate Δv⁽⁰⁾ = W_i^-1 b_i.
-void solveJacobi(const Sheet& sheet, const ImplicitSystem& sys, int sweeps, std::vector<Vec3>& dv,
-                 std::vector<Vec3>& scratch);
+// Eq. 6 with `sweeps` sweeps after the initial estimate. The initial estimate is
+// itself one sweep, from 0 (the paper: Δv⁽⁰⁾ = W_i^-1 b_i) or, with `start`, from
+// that guess (free vertices only; pinned ones stay 0).
+void solveJacobi(const Sheet& sheet, const ImplicitSystem& sys, int sweeps,
+                 std::vector<Vec3>& dv, std::vector<Vec3>& scratch, const Vec3* start = nullptr);
 
 } // namespace pf

@@ -24,6 +24,12 @@ struct SimParams {
 
     double gravity = 9.81; // m/s^2 along -y
 
+    // Start the Jacobi iteration at Δv = h·g (gravity integrated outside the implicit
+    // filter) instead of at 0 as Eq. 6 does. A rigid translation then falls exactly,
+    // because A·(h g 1) = M·h g; the iteration matrix, and so stability, is unchanged.
+    // Off reproduces the paper, which divides gravity by W (solver-facts.md).
+    bool gravityOutsideFilter = false;
+
     // Clamp (1 - L/l) at zero in the Jacobian of a compressed spring so that the
     // system matrix stays positive definite (DESIGN.md reading; see solver-facts.md).
     bool clampCompressed = true;

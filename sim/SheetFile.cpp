@@ -115,6 +115,7 @@ QCborMap paramsToCbor(const SimParams& p) {
     m[QLatin1String("stiffness")] = k;
     m[QLatin1String("damping")] = c;
     m[QLatin1String("gravity")] = p.gravity;
+    m[QLatin1String("gravityOutsideFilter")] = p.gravityOutsideFilter;
     m[QLatin1String("clampCompressed")] = p.clampCompressed;
     m[QLatin1String("breaking")] = p.breaking;
     m[QLatin1String("hinges")] = p.hinges;
@@ -278,6 +279,7 @@ SimParams paramsFromCbor(const QCborMap& m) {
         }
     }
     p.gravity = realAt(m, "gravity", w, -1e3, 1e3);
+    p.gravityOutsideFilter = boolAt(m, "gravityOutsideFilter", w);
     p.clampCompressed = boolAt(m, "clampCompressed", w);
     p.breaking = boolAt(m, "breaking", w);
     p.hinges = boolAt(m, "hinges", w);

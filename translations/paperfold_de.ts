@@ -431,6 +431,14 @@
         <source>Resolution and size apply to the next New or Reset.</source>
         <translation>Auflösung und Größe gelten beim nächsten Neu oder Zurücksetzen.</translation>
     </message>
+    <message>
+        <source>Gravity outside the implicit filter</source>
+        <translation>Schwerkraft außerhalb des impliziten Filters</translation>
+    </message>
+    <message>
+        <source>Start the Jacobi iteration at Δv = h·g. The paper&apos;s step divides gravity by W, so a hanging sheet falls at a fraction of g; this keeps free fall exact at the same stability.</source>
+        <translation>Startet die Jacobi-Iteration bei Δv = h·g. Der Schritt des Artikels teilt die Schwerkraft durch W, sodass ein hängendes Blatt nur mit einem Bruchteil von g fällt; so bleibt der freie Fall bei gleicher Stabilität exakt.</translation>
+    </message>
 </context>
 <context>
     <name>pf::Viewport</name>

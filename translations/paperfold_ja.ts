@@ -430,6 +430,14 @@
         <source>Resolution and size apply to the next New or Reset.</source>
         <translation>解像度と大きさは次の「新規」または「リセット」で反映されます。</translation>
     </message>
+    <message>
+        <source>Gravity outside the implicit filter</source>
+        <translation>重力を陰的フィルターの外で積分</translation>
+    </message>
+    <message>
+        <source>Start the Jacobi iteration at Δv = h·g. The paper&apos;s step divides gravity by W, so a hanging sheet falls at a fraction of g; this keeps free fall exact at the same stability.</source>
+        <translation>ヤコビ反復を Δv = h·g から始めます。論文のステップは重力を W で割るため、吊るしたシートは g のごく一部の加速度でしか落ちません。これにより同じ安定性のまま自由落下が正確になります。</translation>
+    </message>
 </context>
 <context>
     <name>pf::Viewport</name>

@@ -430,6 +430,14 @@
         <source>Resolution and size apply to the next New or Reset.</source>
         <translation>해상도와 크기는 다음 새로 만들기나 초기화 때 적용됩니다.</translation>
     </message>
+    <message>
+        <source>Gravity outside the implicit filter</source>
+        <translation>중력을 암시적 필터 밖에서 적분</translation>
+    </message>
+    <message>
+        <source>Start the Jacobi iteration at Δv = h·g. The paper&apos;s step divides gravity by W, so a hanging sheet falls at a fraction of g; this keeps free fall exact at the same stability.</source>
+        <translation>야코비 반복을 Δv = h·g에서 시작합니다. 논문의 단계는 중력을 W로 나누어 매달린 시트가 g의 일부 가속도로만 떨어집니다. 이렇게 하면 안정성은 그대로이면서 자유 낙하가 정확해집니다.</translation>
+    </message>
 </context>
 <context>
     <name>pf::Viewport</name>

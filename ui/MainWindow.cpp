@@ -135,7 +135,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     updateTitle();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // Children (the undo stack, the panel, the viewport) are deleted by ~QObject, after
+    // this object's own part and the simulation thread are gone; stop them calling back.
+    viewport_->removeEventFilter(this);
+    undo_->disconnect(this);
+    panel_->disconnect(this);
+}
 
 World MainWindow::sceneWorld(const QString& scene) const {
     SceneOptions options;
@@ -155,6 +161,8 @@ World MainWindow::sceneWorld(const QString& scene) const {
         }
     }
     w.script.sphereKeys.clear();
+    // The solver lab's fix: the paper's step would let a hanging sheet fall at 0.4 % of g.
+    w.params.gravityOutsideFilter = true;
     w.sphere.radius = toolRadius_;
     w.sphere.active = false;
     return w;

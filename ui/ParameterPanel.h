@@ -4,6 +4,7 @@
 
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QGridLayout;
@@ -67,6 +68,7 @@ class ParameterPanel : public QWidget {
            *sizeLabel_ = nullptr;
     QComboBox* integrator_ = nullptr;
     QSpinBox* iterations_ = nullptr;
+    QCheckBox* gravityOutside_ = nullptr;
     QSpinBox* stepsPerSecond_ = nullptr;
     QDoubleSpinBox* stiffness_ = nullptr;
     QDoubleSpinBox* bending_ = nullptr;

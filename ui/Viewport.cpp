@@ -45,6 +45,10 @@ void Viewport::resizeEvent(QResizeEvent* event) {
 
 Viewport::~Viewport() {
     releaseGl();
+    // ~QOpenGLWidget destroys the context after this object's own part is gone, and the
+    // automatic disconnect of a receiver comes later still (in ~QObject): cut the
+    // aboutToBeDestroyed connection here, or releaseGl would run on a destroyed Viewport.
+    if (context()) disconnect(context(), nullptr, this, nullptr);
 }
 
 QSurfaceFormat Viewport::requiredFormat() {
