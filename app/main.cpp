@@ -3,6 +3,7 @@
 #include "ExportCommand.h"
 #include "RenderCommand.h"
 #include "SimulateCommand.h"
+#include "StabilityCommand.h"
 
 #include <QCoreApplication>
 #include <QGuiApplication>
@@ -23,6 +24,7 @@ void printUsage(QTextStream& out) {
            "  simulate   run a scene or a saved sheet headless; report statistics, save\n"
            "  export     write the subdivided surface as .obj, .ply or .glb\n"
            "  render     render PNG stills or image sequences with no display (OSMesa)\n"
+           "  stability  map where each integrator fails (CSV and heat maps)\n"
            "\n"
            "paperfold <command> --help lists a command's options.\n"
            "\n"
@@ -49,7 +51,8 @@ int main(int argc, char* argv[]) {
     if (startsEditor(argc, argv)) return pf::runEditor(argc, argv);
     // Rendering draws legends with fonts, which need a GUI application; the
     // offscreen platform gives one with no display at all.
-    const bool gui = argc >= 2 && std::string_view(argv[1]) == "render";
+    const bool gui = argc >= 2 && (std::string_view(argv[1]) == "render" ||
+                                   std::string_view(argv[1]) == "stability");
     if (gui && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     if (gui && qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
@@ -72,6 +75,7 @@ int main(int argc, char* argv[]) {
         if (args[1] == QLatin1String("simulate")) return pf::cli::runSimulate(args);
         if (args[1] == QLatin1String("export")) return pf::cli::runExport(args);
         if (args[1] == QLatin1String("render")) return pf::cli::runRender(args);
+        if (args[1] == QLatin1String("stability")) return pf::cli::runStability(args);
         throw pf::cli::UsageError{QStringLiteral("unknown command '%1'").arg(args[1])};
     } catch (const pf::cli::UsageError& e) {
         err << "paperfold: " << e.message << '\n';

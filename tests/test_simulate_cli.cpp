@@ -3,6 +3,7 @@
 #include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QMap>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -244,6 +245,34 @@ class TestSimulateCli : public QObject {
         QVERIFY(r.exitCode > 0);
         const QString err = QString::fromUtf8(r.err).trimmed();
         QVERIFY2(err.contains(mentions), qPrintable(err));
+    }
+
+    void stabilityMapsWhereMethodsFail() {
+        QTemporaryDir dir;
+        const Result r = runPaperfold({"stability", "--quick", "--output-dir", dir.path()}, true);
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QFile csv(dir.filePath(QStringLiteral("stability.csv")));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QStringList lines =
+            QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 1 + 8 * 3 * 9); // header + methods × scenes × (3 × 3) cells
+        QMap<QString, int> failures;
+        for (const QString& line : lines.mid(1)) {
+            const QStringList f = line.split(QLatin1Char(','));
+            QCOMPARE(f.size(), 9);
+            failures[f[0]] += f[5] != QLatin1String("stable");
+        }
+        // What the theory says, on this grid (docs/solver-lab.md).
+        QCOMPARE(failures.value(QStringLiteral("jacobi-1")), 0);
+        QCOMPARE(failures.value(QStringLiteral("backward-euler")), 0);
+        QVERIFY(failures.value(QStringLiteral("jacobi-1-unclamped")) > 0);
+        QVERIFY(failures.value(QStringLiteral("jacobi-0")) > 0);
+        QVERIFY(failures.value(QStringLiteral("symplectic")) > 0);
+        for (const char* m : {"jacobi-0", "jacobi-1", "symplectic", "backward-euler"}) {
+            const QImage map(
+                dir.filePath(QStringLiteral("stability_%1.png").arg(QLatin1String(m))));
+            QVERIFY(!map.isNull());
+        }
     }
 
     void divergenceIsReportedNotCrashed() {

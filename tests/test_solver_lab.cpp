@@ -4,6 +4,7 @@
 #include "SheetStats.h"
 #include "Simulation.h"
 #include "SpringForce.h"
+#include "StabilityProbe.h"
 #include "SymplecticEulerIntegrator.h"
 
 #include <Eigen/Eigenvalues>
@@ -13,43 +14,29 @@ using namespace pf;
 
 namespace {
 
-enum class Outcome { Stable, Diverged, Overstrained };
-
-// Runs a scene at resolution 7 with breaking off; a run fails on divergence (NaN or
-// a blow-up) or on strain beyond 50 % at the end.
-Outcome run(const char* scene, const char* integrator, int sweeps, bool clamp, double dt,
-            double stiffnessScale, int steps) {
-    SceneOptions o;
-    o.resolution = 7;
-    World w = *makeScene(scene, o);
-    w.params.integrator = integrator;
-    w.params.iterations = sweeps;
-    w.params.clampCompressed = clamp;
-    w.params.dt = dt;
-    w.params.breaking = false;
-    for (double& k : w.params.stiffness) k *= stiffnessScale;
-    Simulation sim(std::move(w));
-    for (int s = 0; s < steps; ++s)
-        if (sim.step() != StepStatus::Ok) {
-            qInfo("%s %s/%d clamp=%d h=%g k*%g: diverged at step %d", scene, integrator, sweeps,
-                  clamp, dt, stiffnessScale, s);
-            return Outcome::Diverged;
-        }
-    const double strain = computeStats(sim.world().sheet).maxStrain;
-    if (strain > 0.5)
-        qInfo("%s %s/%d clamp=%d h=%g k*%g: strain %.2f", scene, integrator, sweeps, clamp, dt,
-              stiffnessScale, strain);
-    return strain > 0.5 ? Outcome::Overstrained : Outcome::Stable;
+// One cell of the map (sim/StabilityProbe.h): resolution 7, 1 s of simulated time or
+// at most 2000 steps, breaking off; strain is judged at the end, after the start's
+// transients.
+bool stable(const char* scene, const char* integrator, int sweeps, bool clamp, double dt,
+            double stiffnessScale) {
+    StabilityCase c;
+    c.scene = scene;
+    c.integrator = integrator;
+    c.sweeps = sweeps;
+    c.clampCompressed = clamp;
+    c.dt = dt;
+    c.stiffnessScale = stiffnessScale;
+    if (c.integrator == "backward-euler") c.maxSteps = 120; // CG is slow; failures show early
+    const StabilityResult r = probeStability(c);
+    if (r.outcome != StabilityOutcome::Stable)
+        qInfo("%s %s/%d clamp=%d h=%g k*%g (a=%.3g): %s after %d steps, strain %.2f", scene,
+              integrator, sweeps, clamp, dt, stiffnessScale, r.a, outcomeName(r.outcome), r.steps,
+              r.endStrain);
+    return r.outcome == StabilityOutcome::Stable;
 }
 
 constexpr double kSteps[] = {1.0 / 30, 1.0 / 480, 1.0 / 7680};
 constexpr double kStiffness[] = {1.0, 100.0, 10000.0};
-
-// One second of simulated time (at most 2000 steps); strain is judged at its end,
-// after the transients of the start.
-int stepsFor(double dt) {
-    return std::min(2000, static_cast<int>(std::lround(1.0 / dt)));
-}
 
 // A sheet hanging straight down (springs along gravity) released at rest: centre-of-
 // mass acceleration over 0.1 s divided by g. Exact backward Euler gives 1.
@@ -151,7 +138,7 @@ class TestSolverLab : public QObject {
         for (const char* scene : {"compress", "drape"})
             for (double k : kStiffness)
                 for (double dt : kSteps)
-                    QVERIFY2(run(scene, "jacobi", 1, true, dt, k, stepsFor(dt)) == Outcome::Stable,
+                    QVERIFY2(stable(scene, "jacobi", 1, true, dt, k),
                              qPrintable(QStringLiteral("%1 h=%2 k×%3")
                                             .arg(QLatin1String(scene))
                                             .arg(dt)
@@ -161,28 +148,22 @@ class TestSolverLab : public QObject {
     void withoutTheClampTheCompressedSheetFailsAtLargeSteps() {
         // Compressed springs have a negative transverse stiffness; at large h²k/m it makes
         // W indefinite. Small steps still work.
-        QVERIFY(run("compress", "jacobi", 1, false, 1.0 / 30, 1.0, stepsFor(1.0 / 30)) !=
-                Outcome::Stable);
-        QVERIFY(run("compress", "jacobi", 1, false, 1.0 / 7680, 1.0, stepsFor(1.0 / 7680)) ==
-                Outcome::Stable);
+        QVERIFY(!stable("compress", "jacobi", 1, false, 1.0 / 30, 1.0));
+        QVERIFY(stable("compress", "jacobi", 1, false, 1.0 / 7680, 1.0));
     }
 
     void zeroSweepsFailsAtLargeStepsAndTwoSweepsOvershoot() {
-        QVERIFY(run("compress", "jacobi", 0, true, 1.0 / 30, 10000.0, stepsFor(1.0 / 30)) !=
-                Outcome::Stable);
-        QVERIFY(run("compress", "jacobi", 0, true, 1.0 / 7680, 1.0, stepsFor(1.0 / 7680)) ==
-                Outcome::Stable);
+        QVERIFY(!stable("compress", "jacobi", 0, true, 1.0 / 30, 10000.0));
+        QVERIFY(stable("compress", "jacobi", 0, true, 1.0 / 7680, 1.0));
         // An even number of Jacobi applications can overshoot high-frequency modes.
-        QVERIFY(run("drape", "jacobi", 2, true, 1.0 / 30, 10000.0, stepsFor(1.0 / 30)) !=
-                Outcome::Stable);
+        QVERIFY(!stable("drape", "jacobi", 2, true, 1.0 / 30, 10000.0));
     }
 
     void exactBackwardEulerNeverFails() {
         for (const char* scene : {"compress", "drape"})
             for (double k : kStiffness)
                 for (double dt : kSteps)
-                    QVERIFY2(run(scene, "backward-euler", 0, true, dt, k,
-                                 std::min(120, stepsFor(dt))) == Outcome::Stable,
+                    QVERIFY2(stable(scene, "backward-euler", 0, true, dt, k),
                              qPrintable(QStringLiteral("%1 h=%2 k×%3")
                                             .arg(QLatin1String(scene))
                                             .arg(dt)
