@@ -1,3 +1,4 @@
+#include "BenchCommand.h"
 #include "CommandLine.h"
 #include "EditorMain.h"
 #include "ExportCommand.h"
@@ -5,6 +6,7 @@
 #include "SimulateCommand.h"
 #include "StabilityCommand.h"
 
+#include <QApplication>
 #include <QCoreApplication>
 #include <QGuiApplication>
 #include <QTextStream>
@@ -25,6 +27,7 @@ void printUsage(QTextStream& out) {
            "  export     write the subdivided surface as .obj, .ply or .glb\n"
            "  render     render PNG stills or image sequences with no display (OSMesa)\n"
            "  stability  map where each integrator fails (CSV and heat maps)\n"
+           "  bench      speed against accuracy of every integrator configuration (CSV, chart)\n"
            "\n"
            "paperfold <command> --help lists a command's options.\n"
            "\n"
@@ -51,8 +54,8 @@ int main(int argc, char* argv[]) {
     if (startsEditor(argc, argv)) return pf::runEditor(argc, argv);
     // Rendering draws legends with fonts, which need a GUI application; the
     // offscreen platform gives one with no display at all.
-    const bool gui = argc >= 2 && (std::string_view(argv[1]) == "render" ||
-                                   std::string_view(argv[1]) == "stability");
+    const std::string_view command = argc >= 2 ? argv[1] : "";
+    const bool gui = command == "render" || command == "stability" || command == "bench";
     if (gui && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     if (gui && qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
@@ -60,8 +63,11 @@ int main(int argc, char* argv[]) {
         const QByteArray dir = "/tmp/runtime-" + QByteArray::number(getuid());
         if (mkdir(dir.constData(), 0700) == 0 || errno == EEXIST) qputenv("XDG_RUNTIME_DIR", dir);
     }
-    std::unique_ptr<QCoreApplication> app = gui ? std::make_unique<QGuiApplication>(argc, argv)
-                                                : std::make_unique<QCoreApplication>(argc, argv);
+    // Charts are widgets: bench needs a QApplication (still on the offscreen platform).
+    std::unique_ptr<QCoreApplication> app = command == "bench"
+                                                ? std::make_unique<QApplication>(argc, argv)
+                                            : gui ? std::make_unique<QGuiApplication>(argc, argv)
+                                                  : std::make_unique<QCoreApplication>(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("paperfold"));
     QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_STRING));
     const QStringList args = QCoreApplication::arguments();
@@ -76,6 +82,7 @@ int main(int argc, char* argv[]) {
         if (args[1] == QLatin1String("export")) return pf::cli::runExport(args);
         if (args[1] == QLatin1String("render")) return pf::cli::runRender(args);
         if (args[1] == QLatin1String("stability")) return pf::cli::runStability(args);
+        if (args[1] == QLatin1String("bench")) return pf::cli::runBench(args);
         throw pf::cli::UsageError{QStringLiteral("unknown command '%1'").arg(args[1])};
     } catch (const pf::cli::UsageError& e) {
         err << "paperfold: " << e.message << '\n';

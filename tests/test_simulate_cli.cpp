@@ -275,6 +275,39 @@ class TestSimulateCli : public QObject {
         }
     }
 
+    void benchChartsSpeedAgainstAccuracy() {
+        QTemporaryDir dir;
+        const Result r = runPaperfold({"bench", "--quick", "--output-dir", dir.path()}, true);
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QFile csv(dir.filePath(QStringLiteral("bench.csv")));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QStringList lines =
+            QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 1 + 6 * 3); // header + 6 methods × 3 steps on drape
+        QMap<QString, QList<double>> error, fall;
+        for (const QString& line : lines.mid(1)) {
+            const QStringList f = line.split(QLatin1Char(','));
+            QCOMPARE(f.size(), 10);
+            error[f[1]] << f[6].toDouble();
+            fall[f[1]] << f[8].toDouble();
+        }
+        // The exact method converges as the step shrinks; the fix restores free fall.
+        const auto be = error.value(QStringLiteral("backward Euler (CG)"));
+        QVERIFY(be.size() == 3 && be[0] > be[1] && be[1] > be[2]);
+        for (double a : fall.value(QStringLiteral("jacobi K=1 + gravity outside")))
+            QVERIFY(std::abs(a - 1.0) < 1e-6);
+        for (double a : fall.value(QStringLiteral("jacobi K=1 (paper)"))) QVERIFY(a < 0.1);
+        const QImage chart(dir.filePath(QStringLiteral("bench_drape.png")));
+        QVERIFY(!chart.isNull());
+        int coloured = 0; // markers are drawn: pixels that are neither grey nor white
+        for (int y = 0; y < chart.height(); y += 2)
+            for (int x = 0; x < chart.width(); x += 2) {
+                const QColor c = chart.pixelColor(x, y);
+                coloured += c.saturation() > 100;
+            }
+        QVERIFY(coloured > 100);
+    }
+
     void divergenceIsReportedNotCrashed() {
         const Result r = runPaperfold({"simulate", "--scene", "drape", "--integrator", "symplectic",
                                        "--dt", "0.05", "--steps", "2000", "--stats"});

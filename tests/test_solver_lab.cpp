@@ -3,6 +3,7 @@
 #include "Scenes.h"
 #include "SheetStats.h"
 #include "Simulation.h"
+#include "SolverMetrics.h"
 #include "SpringForce.h"
 #include "StabilityProbe.h"
 #include "SymplecticEulerIntegrator.h"
@@ -38,28 +39,13 @@ bool stable(const char* scene, const char* integrator, int sweeps, bool clamp, d
 constexpr double kSteps[] = {1.0 / 30, 1.0 / 480, 1.0 / 7680};
 constexpr double kStiffness[] = {1.0, 100.0, 10000.0};
 
-// A sheet hanging straight down (springs along gravity) released at rest: centre-of-
-// mass acceleration over 0.1 s divided by g. Exact backward Euler gives 1.
 double fallRatio(const char* integrator, int sweeps, bool outside, double dt) {
-    World w = *makeScene("drape");
-    w.script.pins.clear();
-    for (auto& p : w.sheet.verts.pinned) p = 0;
-    for (Vec3& x : w.sheet.verts.x) x = Vec3(x.x(), 0.5 - (x.z() + 0.1485), 0.0);
-    w.groundEnabled = false;
-    w.params.integrator = integrator;
-    w.params.iterations = sweeps;
-    w.params.dt = dt;
-    w.params.gravityOutsideFilter = outside;
-    Simulation sim(std::move(w));
-    const int n = static_cast<int>(std::lround(0.1 / dt));
-    for (int k = 0; k < n; ++k) sim.step();
-    double m = 0, p = 0;
-    const auto& V = sim.world().sheet.verts;
-    for (Index i = 0; i < V.size(); ++i) {
-        m += V.m[i];
-        p += V.m[i] * V.v[i].y();
-    }
-    return -(p / m) / (9.81 * n * dt);
+    SimParams p;
+    p.integrator = integrator;
+    p.iterations = sweeps;
+    p.gravityOutsideFilter = outside;
+    p.dt = dt;
+    return freeFallRatio(p);
 }
 
 } // namespace

@@ -1,0 +1,261 @@
+#include "BenchCommand.h"
+
+#include "CommandLine.h"
+#include "SheetStats.h"
+#include "SolverMetrics.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QLegend>
+#include <QLineSeries>
+#include <QLogValueAxis>
+#include <QScatterSeries>
+#include <QTextStream>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace pf::cli {
+
+namespace {
+
+struct Config {
+    QString family; // one chart series per family
+    SimParams params;
+};
+
+struct Row {
+    QString family, scene;
+    double dt = 0, cost = 0, error = INFINITY, strain = 0, fall = 0;
+    int sweeps = 0;
+    bool stable = true;
+};
+
+std::vector<Config> configurations(const std::vector<double>& steps, bool quick) {
+    struct Family {
+        const char* name;
+        const char* integrator;
+        int sweeps;
+        bool outside;
+    };
+    std::vector<Family> families{{"jacobi K=0 (paper)", "jacobi", 0, false},
+                                 {"jacobi K=1 (paper)", "jacobi", 1, false},
+                                 {"jacobi K=1 + gravity outside", "jacobi", 1, true},
+                                 {"jacobi K=4 + gravity outside", "jacobi", 4, true},
+                                 {"symplectic Euler", "symplectic", 0, false},
+                                 {"backward Euler (CG)", "backward-euler", 0, false}};
+    if (!quick) {
+        families.insert(families.begin() + 2, {"jacobi K=4 (paper)", "jacobi", 4, false});
+        families.push_back({"jacobi-scalar K=1 (paper)", "jacobi-scalar", 1, false});
+        families.push_back({"jacobi-scalar K=1 + gravity outside", "jacobi-scalar", 1, true});
+    }
+    std::vector<Config> out;
+    for (const Family& f : families)
+        for (double dt : steps) {
+            Config c;
+            c.family = QLatin1String(f.name);
+            c.params.integrator = f.integrator;
+            c.params.iterations = f.sweeps;
+            c.params.gravityOutsideFilter = f.outside;
+            c.params.dt = dt;
+            out.push_back(c);
+        }
+    return out;
+}
+
+// Points no other point beats in both cost and error, by increasing cost.
+std::vector<const Row*> paretoFront(const std::vector<Row>& rows) {
+    std::vector<const Row*> ok;
+    for (const Row& r : rows)
+        if (r.stable && std::isfinite(r.error) && r.error > 0) ok.push_back(&r);
+    std::sort(ok.begin(), ok.end(), [](const Row* a, const Row* b) { return a->cost < b->cost; });
+    std::vector<const Row*> front;
+    double best = INFINITY;
+    for (const Row* r : ok)
+        if (r->error < best) {
+            front.push_back(r);
+            best = r->error;
+        }
+    return front;
+}
+
+void drawChart(const std::vector<Row>& rows, const QString& scene, const QString& path) {
+    auto* chart = new QChart;
+    chart->setTitle(
+        QStringLiteral("%1: cost against trajectory error (log–log; dashed: Pareto front)")
+            .arg(scene));
+    auto* x = new QLogValueAxis;
+    x->setTitleText(QStringLiteral("wall seconds per simulated second"));
+    x->setLabelFormat(QStringLiteral("%.0e"));
+    auto* y = new QLogValueAxis;
+    y->setTitleText(QStringLiteral("trajectory error / sheet diagonal"));
+    y->setLabelFormat(QStringLiteral("%.0e"));
+    chart->addAxis(x, Qt::AlignBottom);
+    chart->addAxis(y, Qt::AlignLeft);
+    std::map<QString, QScatterSeries*> series;
+    std::vector<Row> sceneRows;
+    for (const Row& r : rows) {
+        if (r.scene != scene) continue;
+        sceneRows.push_back(r);
+        if (!r.stable || !std::isfinite(r.error) || r.error <= 0) continue;
+        auto& s = series[r.family];
+        if (!s) {
+            s = new QScatterSeries;
+            s->setName(r.family);
+            s->setMarkerSize(11);
+            chart->addSeries(s);
+            s->attachAxis(x);
+            s->attachAxis(y);
+        }
+        s->append(r.cost, r.error);
+    }
+    auto* front = new QLineSeries;
+    front->setName(QStringLiteral("Pareto front"));
+    QPen pen(Qt::black);
+    pen.setStyle(Qt::DashLine);
+    front->setPen(pen);
+    for (const Row* r : paretoFront(sceneRows)) front->append(r->cost, r->error);
+    chart->addSeries(front);
+    front->attachAxis(x);
+    front->attachAxis(y);
+    // Log axes do not follow the data by themselves.
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {0, 0};
+    for (const Row& r : sceneRows) {
+        if (!r.stable || !std::isfinite(r.error) || r.error <= 0) continue;
+        lo[0] = std::min(lo[0], r.cost);
+        hi[0] = std::max(hi[0], r.cost);
+        lo[1] = std::min(lo[1], r.error);
+        hi[1] = std::max(hi[1], r.error);
+    }
+    if (hi[0] > 0) {
+        x->setRange(lo[0] / 2, hi[0] * 2);
+        y->setRange(lo[1] / 2, hi[1] * 2);
+    }
+    chart->legend()->setAlignment(Qt::AlignRight);
+    QChartView view(chart);
+    view.setRenderHint(QPainter::Antialiasing);
+    view.resize(1400, 800);
+    view.grab().save(path, "PNG");
+}
+
+} // namespace
+
+int runBench(const QStringList& arguments) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Speed against accuracy for every integrator configuration (method × sweeps × time "
+        "step, i.e. sub-steps of a 60 Hz frame) on the canonical scenes. Prints a table and "
+        "writes bench.csv and one chart per scene, bench_<scene>.png."));
+    parser.addHelpOption();
+    parser.addPositionalArgument(QStringLiteral("bench"), QStringLiteral("The subcommand."));
+    parser.addOptions({
+        {QStringLiteral("output-dir"),
+         QStringLiteral("Folder for the CSV and charts (default: bench)."), QStringLiteral("dir"),
+         QStringLiteral("bench")},
+        {QStringLiteral("quick"),
+         QStringLiteral("Fewer configurations, one scene: under a minute, for CI.")},
+    });
+    if (!parseCommand(parser, arguments)) return 0;
+    const bool quick = parser.isSet(QStringLiteral("quick"));
+    const std::vector<double> steps = quick ? std::vector<double>{1.0 / 60, 1.0 / 240, 1.0 / 960}
+                                            : std::vector<double>{1.0 / 60,  1.0 / 120, 1.0 / 240,
+                                                                  1.0 / 480, 1.0 / 960, 1.0 / 1920};
+    const std::vector<QString> scenes =
+        quick ? std::vector<QString>{QStringLiteral("drape")}
+              : std::vector<QString>{QStringLiteral("drape"), QStringLiteral("press"),
+                                     QStringLiteral("compress")};
+    const int resolution = 9;
+    const double horizon = 0.25; // seconds of simulated time
+    const int repeats = 3;
+    const QDir dir(parser.value(QStringLiteral("output-dir")));
+    if (!dir.exists() && !QDir().mkpath(dir.path()))
+        throw UsageError{QStringLiteral("--output-dir: cannot create '%1'").arg(dir.path())};
+
+    QTextStream out(stdout), err(stderr);
+    std::vector<Row> rows;
+    for (const QString& scene : scenes) {
+        // Reference: backward Euler solved exactly at a step 64 times smaller than the
+        // smallest benchmarked, checked against twice that step.
+        SimParams ref;
+        ref.integrator = "backward-euler";
+        ref.dt = steps.back() / 64;
+        World reference = labWorld(scene.toStdString(), resolution, ref);
+        ref.dt *= 2;
+        World coarser = labWorld(scene.toStdString(), resolution, ref);
+        advanceFor(reference, horizon);
+        advanceFor(coarser, horizon);
+        const double refError = trajectoryError(coarser.sheet, reference.sheet);
+        err << QStringLiteral("%1: reference h = 1/%2, its own change at twice the step: %3\n")
+                   .arg(scene)
+                   .arg(std::lround(1.0 / (ref.dt / 2)))
+                   .arg(refError, 0, 'g', 3)
+            << Qt::flush;
+
+        for (const Config& c : configurations(steps, quick)) {
+            Row r;
+            r.family = c.family;
+            r.scene = scene;
+            r.dt = c.params.dt;
+            r.sweeps = c.params.iterations;
+            std::vector<double> times;
+            World last;
+            for (int k = 0; k < repeats; ++k) {
+                World w = labWorld(scene.toStdString(), resolution, c.params);
+                QElapsedTimer t;
+                t.start();
+                r.stable = advanceFor(w, horizon) && r.stable;
+                times.push_back(t.nsecsElapsed() * 1e-9 / horizon);
+                last = std::move(w);
+                if (!r.stable) break;
+            }
+            std::sort(times.begin(), times.end());
+            r.cost = times[times.size() / 2];
+            if (r.stable) {
+                r.error = trajectoryError(last.sheet, reference.sheet);
+                r.strain = computeStats(last.sheet).maxStrain;
+            }
+            r.fall = freeFallRatio(c.params);
+            rows.push_back(r);
+        }
+    }
+
+    QFile csv(dir.filePath(QStringLiteral("bench.csv")));
+    if (!csv.open(QIODevice::WriteOnly | QIODevice::Text))
+        throw UsageError{QStringLiteral("cannot write %1").arg(csv.fileName())};
+    QTextStream c(&csv);
+    c << "scene,method,dt,substeps_per_60Hz_frame,sweeps,cost_s_per_s,trajectory_error,max_strain,"
+         "free_fall_ratio,stable\n";
+    out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7\n")
+               .arg(QStringLiteral("scene"), -9)
+               .arg(QStringLiteral("method"), -36)
+               .arg(QStringLiteral("h"), -7)
+               .arg(QStringLiteral("cost s/s"), 10)
+               .arg(QStringLiteral("error"), 10)
+               .arg(QStringLiteral("strain"), 8)
+               .arg(QStringLiteral("a/g"), 8);
+    for (const Row& r : rows) {
+        const long sub = std::lround((1.0 / 60) / r.dt);
+        c << r.scene << ',' << r.family << ',' << r.dt << ',' << sub << ',' << r.sweeps << ','
+          << r.cost << ',' << r.error << ',' << r.strain << ',' << r.fall << ','
+          << (r.stable ? 1 : 0) << '\n';
+        out << QStringLiteral("%1 %2 1/%3 %4 %5 %6 %7\n")
+                   .arg(r.scene, -9)
+                   .arg(r.family, -36)
+                   .arg(std::lround(1.0 / r.dt), -5)
+                   .arg(r.cost, 10, 'g', 3)
+                   .arg(r.stable ? QString::number(r.error, 'g', 3) : QStringLiteral("unstable"),
+                        10)
+                   .arg(r.strain, 8, 'g', 3)
+                   .arg(r.fall, 8, 'f', 4);
+    }
+    for (const QString& scene : scenes)
+        drawChart(rows, scene, dir.filePath(QStringLiteral("bench_%1.png").arg(scene)));
+    out << "wrote " << csv.fileName() << " and the charts in " << dir.path() << '\n';
+    return 0;
+}
+
+} // namespace pf::cli
