@@ -86,8 +86,8 @@ void jacobiSweep(const Sheet& sheet, const ImplicitSystem& sys, const std::vecto
         out[i] = pinned[i] ? Vec3::Zero() : Vec3(sys.diagInv[i] * out[i]);
 }
 
-void solveJacobi(const Sheet& sheet, const ImplicitSystem& sys, int sweeps,
-                 std::vector<Vec3>& dv, std::vector<Vec3>& scratch, const Vec3* start) {
+void solveJacobi(const Sheet& sheet, const ImplicitSystem& sys, int sweeps, std::vector<Vec3>& dv,
+                 std::vector<Vec3>& scratch, const Vec3* start) {
     const Index nv = sheet.verts.size();
     dv.resize(nv);
     if (start) {

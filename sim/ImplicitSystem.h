@@ -46,7 +46,7 @@ void jacobiSweep(const Sheet& sheet, const ImplicitSystem& sys, const std::vecto
 // Eq. 6 with `sweeps` sweeps after the initial estimate. The initial estimate is
 // itself one sweep, from 0 (the paper: Δv⁽⁰⁾ = W_i^-1 b_i) or, with `start`, from
 // that guess (free vertices only; pinned ones stay 0).
-void solveJacobi(const Sheet& sheet, const ImplicitSystem& sys, int sweeps,
-                 std::vector<Vec3>& dv, std::vector<Vec3>& scratch, const Vec3* start = nullptr);
+void solveJacobi(const Sheet& sheet, const ImplicitSystem& sys, int sweeps, std::vector<Vec3>& dv,
+                 std::vector<Vec3>& scratch, const Vec3* start = nullptr);
 
 } // namespace pf
