@@ -75,6 +75,7 @@ GLuint SheetRenderer::program(const char* vert, const char* geom, const char* fr
 
 bool SheetRenderer::initialize(const GlFunctions& gl, QString* error) {
     gl_ = &gl;
+    surfaceKey_ = SurfaceKey{}; // new buffers hold nothing yet
     QString err;
     surfaceProgram_ = program("surface.vert", nullptr, "surface.frag", &err);
     if (surfaceProgram_) linesProgram_ = program("lines.vert", "lines.geom", "lines.frag", &err);
@@ -192,6 +193,9 @@ void SheetRenderer::setVec3(GLuint prog, const char* name, const float* v) {
 
 void SheetRenderer::uploadSurface(const SheetSnapshot& snap, const RenderOptions& options) {
     const bool strain = options.overlays & OverlayStrain;
+    const SurfaceKey key{snap.serial, options.subdivision, snap.sigma, options.strainRange, strain};
+    if (snap.serial != 0 && key == surfaceKey_) return;
+    surfaceKey_ = key;
     const SurfaceMesh mesh = subdivide(snap.x, snap.tris, strain ? &snap.vertexStrain : nullptr,
                                        snap.sigma, options.subdivision);
     vertexData_.clear();

@@ -51,6 +51,15 @@ class SheetRenderer {
     GLuint sphereVao_ = 0, sphereVbo_ = 0, sphereEbo_ = 0;
     GLuint emptyVao_ = 0;
     GLsizei surfaceIndexCount_ = 0, sphereIndexCount_ = 0;
+    // What the surface buffers hold, so a repaint with a new camera only does not
+    // subdivide again.
+    struct SurfaceKey {
+        std::uint64_t serial = 0;
+        int subdivision = -1;
+        double sigma = -1.0, strainRange = -1.0;
+        bool strain = false;
+        friend bool operator==(const SurfaceKey&, const SurfaceKey&) = default;
+    } surfaceKey_;
     std::vector<float> vertexData_, lineData_;
     std::vector<std::uint32_t> indexData_;
     std::vector<LineBatch> lineBatches_;

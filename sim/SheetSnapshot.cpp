@@ -3,6 +3,7 @@
 #include "Breaking.h"
 #include "Normals.h"
 
+#include <atomic>
 #include <cmath>
 
 namespace pf {
@@ -55,6 +56,8 @@ SheetSnapshot makeSnapshot(const World& world, double recentSeconds) {
     snap.time = world.time;
     snap.step = world.stepCount;
     snap.sigma = world.params.sigma;
+    static std::atomic<std::uint64_t> serials{0};
+    snap.serial = ++serials;
     return snap;
 }
 

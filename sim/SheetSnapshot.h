@@ -25,6 +25,8 @@ struct SheetSnapshot {
     double time = 0.0;
     std::int64_t step = 0;
     double sigma = 1.0;
+    // Unique per makeSnapshot call: lets a renderer keep work done for this snapshot.
+    std::uint64_t serial = 0;
 };
 
 // `recentSeconds`: how far back a break counts as recent.

@@ -80,6 +80,26 @@ class TestRender : public QObject {
         QCOMPARE(draw(c), draw(c));
     }
 
+    void redrawingOneSnapshotFromAnotherViewIsExact() {
+        // The renderer keeps the subdivided surface of a snapshot between frames; a
+        // camera move, an overlay switch and coming back must draw exactly as fresh.
+        const test::RenderCase& c = test::renderCases()[0];
+        const SheetSnapshot snap = test::snapshotFor(c);
+        const OrbitCamera cam = test::cameraFor(c, snap, double(kWidth) / kHeight);
+        OrbitCamera other = cam;
+        other.orbit(60, -10);
+        RenderOptions strain = test::optionsFor(c);
+        strain.overlays = OverlayStrain;
+        const QImage first = renderer->render(snap, cam, test::optionsFor(c));
+        const QImage moved = renderer->render(snap, other, test::optionsFor(c));
+        const QImage heat = renderer->render(snap, cam, strain);
+        const QImage again = renderer->render(snap, cam, test::optionsFor(c));
+        QVERIFY(moved != first);
+        QVERIFY(heat != first);
+        QCOMPARE(again, first);
+        QCOMPARE(again, draw(c)); // and the same as a fresh snapshot of the same state
+    }
+
     void sigmaVisiblyChangesTheSurface() {
         // A coarse crumpled sheet up close, σ = 0 against σ = 1 (the two coarse
         // baselines): the difference is far beyond the tolerance.
