@@ -18,6 +18,7 @@ struct SceneOptions {
 //   press    a sheet on the ground, pressed and dragged by a moving sphere (Fig. 13)
 //   drape    pinned at two corners, falls under gravity; breaking off
 //   compress two opposite edges pushed toward each other: the sheet buckles and creases
+//   drop     a sheet tilted 45° falls onto the ground
 // Returns nullopt for an unknown name.
 std::optional<World> makeScene(std::string_view name, const SceneOptions& options = {});
 const std::vector<std::string>& sceneNames();

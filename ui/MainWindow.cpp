@@ -351,6 +351,7 @@ void MainWindow::retranslate() {
     set("new.press", tr("&Press (sphere on a sheet)"));
     set("new.drape", tr("&Drape (hanging sheet)"));
     set("new.compress", tr("&Compress (edges pushed together)"));
+    set("new.drop", tr("D&rop (tilted sheet falls)"));
     set("open", tr("&Open…"));
     set("save", tr("&Save"));
     set("saveAs", tr("Save &As…"));
