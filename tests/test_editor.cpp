@@ -5,11 +5,17 @@
 #include "SheetFile.h"
 #include "SheetStats.h"
 #include "SimulationThread.h"
+#include "SolverPanel.h"
 #include "Viewport.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QDateTime>
+#include <QDialog>
 #include <QElapsedTimer>
+#include <QLabel>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
@@ -99,10 +105,10 @@ class TestEditor : public QObject {
         window->panel()->sigmaSlider()->setValue(50);
         QVERIFY(waitForCount(applied, 3));
         QCOMPARE(applied.last().at(0).value<SimParams>().sigma, 0.50);
-        window->panel()->integratorBox()->setCurrentText(QStringLiteral("backward-euler"));
+        window->solverPanel()->integratorBox()->setCurrentText(QStringLiteral("backward-euler"));
         QVERIFY(waitForCount(applied, 4));
         QCOMPARE(applied.last().at(0).value<SimParams>().integrator, std::string("backward-euler"));
-        window->panel()->iterationsBox()->setValue(4);
+        window->solverPanel()->iterationsBox()->setValue(4);
         QVERIFY(waitForCount(applied, 5));
         QCOMPARE(applied.last().at(0).value<SimParams>().iterations, 4);
         // And the simulation's own state agrees.
@@ -267,6 +273,49 @@ class TestEditor : public QObject {
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("ファイル(&F)"));
         QVERIFY(MainWindow::installLanguage(QStringLiteral("en")));
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("&File"));
+    }
+
+    void solverDockChoosesTheIntegratorAndShowsLiveStrain() {
+        SolverPanel* solver = window->solverPanel();
+        QSignalSpy applied(window->simulation(), &SimulationThread::paramsApplied);
+        solver->integratorBox()->setCurrentText(QStringLiteral("jacobi-scalar"));
+        QVERIFY(waitForCount(applied, 1));
+        QCOMPARE(applied.last().at(0).value<SimParams>().integrator, std::string("jacobi-scalar"));
+        QVERIFY(window->params().gravityOutsideFilter); // the editor's default
+        solver->gravityBox()->setChecked(false);
+        QVERIFY(waitForCount(applied, 2));
+        QCOMPARE(applied.last().at(0).value<SimParams>().gravityOutsideFilter, false);
+        QCOMPARE(worldOf(*window)->params.integrator, std::string("jacobi-scalar"));
+        // Live strain: shown after steps, as a percentage.
+        for (int k = 0; k < 30; ++k) window->simulation()->stepOnce();
+        settledStatus(*window);
+        QTRY_VERIFY(solver->strainLabel()->text().contains(QLatin1Char('%')));
+        // Undo goes back through the same dock.
+        window->undoStack()->undo();
+        QTRY_COMPARE(solver->gravityBox()->isChecked(), true);
+    }
+
+    void openLatestChartShowsTheNewestBenchChart() {
+        QTemporaryDir dir;
+        QImage older(200, 100, QImage::Format_RGB32), newer(300, 150, QImage::Format_RGB32);
+        older.fill(Qt::red);
+        newer.fill(Qt::blue);
+        QVERIFY(older.save(dir.filePath(QStringLiteral("bench_drape.png"))));
+        {
+            QFile old(dir.filePath(QStringLiteral("bench_drape.png")));
+            QVERIFY(old.open(QIODevice::ReadWrite));
+            QVERIFY(old.setFileTime(QDateTime::currentDateTime().addSecs(-60),
+                                    QFileDevice::FileModificationTime));
+        }
+        QVERIFY(newer.save(dir.filePath(QStringLiteral("bench_drop.png"))));
+        window->chartFolder = dir.path();
+        const auto button = window->solverPanel()->findChildren<QPushButton*>();
+        QCOMPARE(button.size(), 1);
+        button.first()->click();
+        QCOMPARE(window->lastChart(), dir.filePath(QStringLiteral("bench_drop.png")));
+        QDialog* shown = window->findChild<QDialog*>();
+        QVERIFY(shown && shown->isVisible());
+        shown->close();
     }
 
     void closingAModifiedSheetAsks() {

@@ -352,6 +352,18 @@
         <source>D&amp;rop (tilted sheet falls)</source>
         <translation>&amp;Fallen (schräges Blatt fällt)</translation>
     </message>
+    <message>
+        <source>Solver</source>
+        <translation>Löser</translation>
+    </message>
+    <message>
+        <source>Folder written by &apos;paperfold bench&apos;</source>
+        <translation>Von „paperfold bench“ geschriebener Ordner</translation>
+    </message>
+    <message>
+        <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
+        <translation>Kein bench_*.png in %1. Ausführen: paperfold bench --output-dir %1</translation>
+    </message>
 </context>
 <context>
     <name>pf::ParameterPanel</name>
@@ -396,22 +408,6 @@
         <translation>Erweitert</translation>
     </message>
     <message>
-        <source>Integrator</source>
-        <translation>Integrator</translation>
-    </message>
-    <message>
-        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
-        <translation>jacobi: der näherungsweise implizite Schritt des Artikels (Gl. 6); jacobi-scalar: derselbe mit k·I-Blöcken; symplectic: explizit; backward-euler: der exakte implizite Schritt (langsam, die Referenz).</translation>
-    </message>
-    <message>
-        <source>Jacobi sweeps</source>
-        <translation>Jacobi-Durchläufe</translation>
-    </message>
-    <message>
-        <source>Steps per second</source>
-        <translation>Schritte pro Sekunde</translation>
-    </message>
-    <message>
         <source>Stretch stiffness</source>
         <translation>Dehnsteifigkeit</translation>
     </message>
@@ -435,6 +431,33 @@
         <source>Resolution and size apply to the next New or Reset.</source>
         <translation>Auflösung und Größe gelten beim nächsten Neu oder Zurücksetzen.</translation>
     </message>
+</context>
+<context>
+    <name>pf::SolverPanel</name>
+    <message>
+        <source>%1 µs</source>
+        <translation>%1 µs</translation>
+    </message>
+    <message>
+        <source>max %1 %, RMS %2 %</source>
+        <translation>max. %1 %, RMS %2 %</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>Integrator</translation>
+    </message>
+    <message>
+        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
+        <translation>jacobi: der näherungsweise implizite Schritt des Artikels (Gl. 6); jacobi-scalar: derselbe mit k·I-Blöcken; symplectic: explizit; backward-euler: der exakte implizite Schritt (langsam, die Referenz).</translation>
+    </message>
+    <message>
+        <source>Jacobi sweeps</source>
+        <translation>Jacobi-Durchläufe</translation>
+    </message>
+    <message>
+        <source>Steps per second</source>
+        <translation>Schritte pro Sekunde</translation>
+    </message>
     <message>
         <source>Gravity outside the implicit filter</source>
         <translation>Schwerkraft außerhalb des impliziten Filters</translation>
@@ -442,6 +465,26 @@
     <message>
         <source>Start the Jacobi iteration at Δv = h·g. The paper&apos;s step divides gravity by W, so a hanging sheet falls at a fraction of g; this keeps free fall exact at the same stability.</source>
         <translation>Startet die Jacobi-Iteration bei Δv = h·g. Der Schritt des Artikels teilt die Schwerkraft durch W, sodass ein hängendes Blatt nur mit einem Bruchteil von g fällt; so bleibt der freie Fall bei gleicher Stabilität exakt.</translation>
+    </message>
+    <message>
+        <source>Step time</source>
+        <translation>Schrittzeit</translation>
+    </message>
+    <message>
+        <source>Strain</source>
+        <translation>Dehnung</translation>
+    </message>
+    <message>
+        <source>|l/l0 - 1| over the structural springs, live</source>
+        <translation>|l/l0 - 1| über die Strukturfedern, live</translation>
+    </message>
+    <message>
+        <source>Open Latest Chart…</source>
+        <translation>Neuestes Diagramm öffnen…</translation>
+    </message>
+    <message>
+        <source>Show the newest speed–accuracy chart written by &apos;paperfold bench&apos;.</source>
+        <translation>Das neueste Geschwindigkeits-Genauigkeits-Diagramm von „paperfold bench“ anzeigen.</translation>
     </message>
 </context>
 <context>

@@ -351,6 +351,18 @@
         <source>D&amp;rop (tilted sheet falls)</source>
         <translation>落下（傾いたシートが落ちる）(&amp;R)</translation>
     </message>
+    <message>
+        <source>Solver</source>
+        <translation>ソルバー</translation>
+    </message>
+    <message>
+        <source>Folder written by &apos;paperfold bench&apos;</source>
+        <translation>「paperfold bench」が書き出したフォルダー</translation>
+    </message>
+    <message>
+        <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
+        <translation>%1 に bench_*.png がありません。次を実行してください：paperfold bench --output-dir %1</translation>
+    </message>
 </context>
 <context>
     <name>pf::ParameterPanel</name>
@@ -395,22 +407,6 @@
         <translation>詳細設定</translation>
     </message>
     <message>
-        <source>Integrator</source>
-        <translation>積分器</translation>
-    </message>
-    <message>
-        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
-        <translation>jacobi：論文の近似陰的ステップ（式6）、jacobi-scalar：k·I ブロックを使う同じ手法、symplectic：陽的、backward-euler：厳密な陰的ステップ（低速、基準）。</translation>
-    </message>
-    <message>
-        <source>Jacobi sweeps</source>
-        <translation>ヤコビ反復回数</translation>
-    </message>
-    <message>
-        <source>Steps per second</source>
-        <translation>1秒あたりのステップ数</translation>
-    </message>
-    <message>
         <source>Stretch stiffness</source>
         <translation>伸びの剛性</translation>
     </message>
@@ -434,6 +430,33 @@
         <source>Resolution and size apply to the next New or Reset.</source>
         <translation>解像度と大きさは次の「新規」または「リセット」で反映されます。</translation>
     </message>
+</context>
+<context>
+    <name>pf::SolverPanel</name>
+    <message>
+        <source>%1 µs</source>
+        <translation>%1 µs</translation>
+    </message>
+    <message>
+        <source>max %1 %, RMS %2 %</source>
+        <translation>最大 %1 %、RMS %2 %</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>積分器</translation>
+    </message>
+    <message>
+        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
+        <translation>jacobi：論文の近似陰的ステップ（式6）、jacobi-scalar：k·I ブロックを使う同じ手法、symplectic：陽的、backward-euler：厳密な陰的ステップ（低速、基準）。</translation>
+    </message>
+    <message>
+        <source>Jacobi sweeps</source>
+        <translation>ヤコビ反復回数</translation>
+    </message>
+    <message>
+        <source>Steps per second</source>
+        <translation>1秒あたりのステップ数</translation>
+    </message>
     <message>
         <source>Gravity outside the implicit filter</source>
         <translation>重力を陰的フィルターの外で積分</translation>
@@ -441,6 +464,26 @@
     <message>
         <source>Start the Jacobi iteration at Δv = h·g. The paper&apos;s step divides gravity by W, so a hanging sheet falls at a fraction of g; this keeps free fall exact at the same stability.</source>
         <translation>ヤコビ反復を Δv = h·g から始めます。論文のステップは重力を W で割るため、吊るしたシートは g のごく一部の加速度でしか落ちません。これにより同じ安定性のまま自由落下が正確になります。</translation>
+    </message>
+    <message>
+        <source>Step time</source>
+        <translation>ステップ時間</translation>
+    </message>
+    <message>
+        <source>Strain</source>
+        <translation>ひずみ</translation>
+    </message>
+    <message>
+        <source>|l/l0 - 1| over the structural springs, live</source>
+        <translation>構造ばねの |l/l0 - 1|（リアルタイム）</translation>
+    </message>
+    <message>
+        <source>Open Latest Chart…</source>
+        <translation>最新のグラフを開く…</translation>
+    </message>
+    <message>
+        <source>Show the newest speed–accuracy chart written by &apos;paperfold bench&apos;.</source>
+        <translation>「paperfold bench」が書き出した最新の速度と精度のグラフを表示します。</translation>
     </message>
 </context>
 <context>

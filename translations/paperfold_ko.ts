@@ -351,6 +351,18 @@
         <source>D&amp;rop (tilted sheet falls)</source>
         <translation>떨어뜨리기 (기울어진 시트가 떨어짐)(&amp;R)</translation>
     </message>
+    <message>
+        <source>Solver</source>
+        <translation>솔버</translation>
+    </message>
+    <message>
+        <source>Folder written by &apos;paperfold bench&apos;</source>
+        <translation>&apos;paperfold bench&apos;가 쓴 폴더</translation>
+    </message>
+    <message>
+        <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
+        <translation>%1에 bench_*.png가 없습니다. 실행: paperfold bench --output-dir %1</translation>
+    </message>
 </context>
 <context>
     <name>pf::ParameterPanel</name>
@@ -395,22 +407,6 @@
         <translation>고급</translation>
     </message>
     <message>
-        <source>Integrator</source>
-        <translation>적분기</translation>
-    </message>
-    <message>
-        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
-        <translation>jacobi: 논문의 근사 암시적 단계(식 6), jacobi-scalar: k·I 블록을 쓰는 같은 방법, symplectic: 명시적, backward-euler: 정확한 암시적 단계(느림, 기준).</translation>
-    </message>
-    <message>
-        <source>Jacobi sweeps</source>
-        <translation>야코비 반복 횟수</translation>
-    </message>
-    <message>
-        <source>Steps per second</source>
-        <translation>초당 단계 수</translation>
-    </message>
-    <message>
         <source>Stretch stiffness</source>
         <translation>인장 강성</translation>
     </message>
@@ -434,6 +430,33 @@
         <source>Resolution and size apply to the next New or Reset.</source>
         <translation>해상도와 크기는 다음 새로 만들기나 초기화 때 적용됩니다.</translation>
     </message>
+</context>
+<context>
+    <name>pf::SolverPanel</name>
+    <message>
+        <source>%1 µs</source>
+        <translation>%1 µs</translation>
+    </message>
+    <message>
+        <source>max %1 %, RMS %2 %</source>
+        <translation>최대 %1 %, RMS %2 %</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>적분기</translation>
+    </message>
+    <message>
+        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
+        <translation>jacobi: 논문의 근사 암시적 단계(식 6), jacobi-scalar: k·I 블록을 쓰는 같은 방법, symplectic: 명시적, backward-euler: 정확한 암시적 단계(느림, 기준).</translation>
+    </message>
+    <message>
+        <source>Jacobi sweeps</source>
+        <translation>야코비 반복 횟수</translation>
+    </message>
+    <message>
+        <source>Steps per second</source>
+        <translation>초당 단계 수</translation>
+    </message>
     <message>
         <source>Gravity outside the implicit filter</source>
         <translation>중력을 암시적 필터 밖에서 적분</translation>
@@ -441,6 +464,26 @@
     <message>
         <source>Start the Jacobi iteration at Δv = h·g. The paper&apos;s step divides gravity by W, so a hanging sheet falls at a fraction of g; this keeps free fall exact at the same stability.</source>
         <translation>야코비 반복을 Δv = h·g에서 시작합니다. 논문의 단계는 중력을 W로 나누어 매달린 시트가 g의 일부 가속도로만 떨어집니다. 이렇게 하면 안정성은 그대로이면서 자유 낙하가 정확해집니다.</translation>
+    </message>
+    <message>
+        <source>Step time</source>
+        <translation>단계 시간</translation>
+    </message>
+    <message>
+        <source>Strain</source>
+        <translation>변형률</translation>
+    </message>
+    <message>
+        <source>|l/l0 - 1| over the structural springs, live</source>
+        <translation>구조 스프링의 |l/l0 - 1| (실시간)</translation>
+    </message>
+    <message>
+        <source>Open Latest Chart…</source>
+        <translation>최신 차트 열기…</translation>
+    </message>
+    <message>
+        <source>Show the newest speed–accuracy chart written by &apos;paperfold bench&apos;.</source>
+        <translation>&apos;paperfold bench&apos;가 만든 최신 속도-정확도 차트를 보여 줍니다.</translation>
     </message>
 </context>
 <context>

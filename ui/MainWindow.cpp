@@ -6,6 +6,7 @@
 #include "SheetBuilder.h"
 #include "SheetFile.h"
 #include "SimulationThread.h"
+#include "SolverPanel.h"
 #include "Subdivision.h"
 #include "SurfaceExport.h"
 #include "UndoCommands.h"
@@ -15,6 +16,8 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDialog>
+#include <QDir>
 #include <QDockWidget>
 #include <QEventLoop>
 #include <QFileDialog>
@@ -25,6 +28,7 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMouseEvent>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
@@ -33,6 +37,7 @@
 #include <QTranslator>
 #include <QUndoStack>
 #include <QUndoView>
+#include <QVBoxLayout>
 #include <QWheelEvent>
 
 namespace pf {
@@ -106,6 +111,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     statusBar()->addWidget(stepLabel_);
     statusBar()->addPermanentWidget(countsLabel_);
     panel_->showParams(params_);
+    solver_->showParams(params_);
     panel_->setToolRadius(toolRadius_);
 
     connect(sim_.get(), &SimulationThread::snapshotReady, this, &MainWindow::onSnapshot);
@@ -121,6 +127,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     connect(undo_, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(panel_, &ParameterPanel::paramsEdited, this, &MainWindow::onParamsEdited);
+    connect(solver_, &SolverPanel::paramsEdited, this, &MainWindow::onParamsEdited);
+    connect(solver_, &SolverPanel::openChartRequested, this, &MainWindow::openLatestChart);
+    chartFolder =
+        QSettings().value(QStringLiteral("bench/folder"), QStringLiteral("bench")).toString();
     connect(panel_, &ParameterPanel::toolRadiusChanged, this, [this](double r) {
         toolRadius_ = r;
         sim_->setTool(toolTarget_, toolRadius_, true, toolPressed_);
@@ -141,6 +151,7 @@ MainWindow::~MainWindow() {
     viewport_->removeEventFilter(this);
     undo_->disconnect(this);
     panel_->disconnect(this);
+    solver_->disconnect(this);
 }
 
 World MainWindow::sceneWorld(const QString& scene) const {
@@ -337,9 +348,15 @@ void MainWindow::createDocks() {
     historyDock_->setObjectName(QStringLiteral("historyDock"));
     historyDock_->setWidget(undoView_);
     addDockWidget(Qt::RightDockWidgetArea, historyDock_);
+    solver_ = new SolverPanel(this);
+    solverDock_ = new QDockWidget(this);
+    solverDock_->setObjectName(QStringLiteral("solverDock"));
+    solverDock_->setWidget(solver_);
+    addDockWidget(Qt::RightDockWidgetArea, solverDock_);
     viewMenu_->addSeparator();
     viewMenu_->addAction(panelDock_->toggleViewAction());
     viewMenu_->addAction(historyDock_->toggleViewAction());
+    viewMenu_->addAction(solverDock_->toggleViewAction());
 }
 
 void MainWindow::retranslate() {
@@ -392,6 +409,7 @@ void MainWindow::retranslate() {
     toolBar_->setWindowTitle(tr("Main toolbar"));
     panelDock_->setWindowTitle(tr("Parameters"));
     historyDock_->setWindowTitle(tr("History"));
+    solverDock_->setWindowTitle(tr("Solver"));
     undoView_->setEmptyLabel(tr("<new sheet>"));
     updateTitle();
 }
@@ -438,6 +456,7 @@ void MainWindow::onSnapshot() {
     }
     fpsLabel_->setText(tr("%1 fps").arg(fps_, 0, 'f', 0));
     stepLabel_->setText(tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0));
+    solver_->showStatus(st);
     countsLabel_->setText(tr("%1 vertices · %2 springs · %3 breaks · %4 hinges")
                               .arg(st.vertices)
                               .arg(st.springs)
@@ -461,12 +480,16 @@ void MainWindow::updateTitle() {
 void MainWindow::applyParams(const SimParams& params) {
     params_ = params;
     panel_->showParams(params);
+    solver_->showParams(params);
     sim_->setParams(params);
 }
 
 void MainWindow::onParamsEdited(const SimParams& params, const QString& what, int drag) {
     const SimParams before = params_;
     params_ = params;
+    // Each panel edits some fields; keep both showing (and sending) the whole.
+    panel_->showParams(params_);
+    solver_->showParams(params_);
     undo_->push(new ParameterCommand(before, params, what, drag,
                                      [this](const SimParams& p) { applyParams(p); }));
 }
@@ -493,6 +516,7 @@ bool MainWindow::openFile(const QString& path) {
     }
     params_ = load.world->params;
     panel_->showParams(params_);
+    solver_->showParams(params_);
     savedStep_ = lastStep_ = load.world->stepCount;
     sim_->replaceWorld(*load.world);
     scene_ = QString::fromStdString(load.world->scene);
@@ -735,6 +759,38 @@ void MainWindow::exportMesh() {
     QString error;
     if (!writeSurface(mesh, path, format, true, &error))
         showError(tr("Could not export the mesh: %1").arg(error));
+}
+
+void MainWindow::openLatestChart() {
+    QDir dir(chartFolder);
+    QFileInfoList charts =
+        dir.entryInfoList({QStringLiteral("bench_*.png")}, QDir::Files, QDir::Time);
+    if (charts.isEmpty()) {
+        const QString picked = QFileDialog::getExistingDirectory(
+            this, tr("Folder written by 'paperfold bench'"), chartFolder);
+        if (picked.isEmpty()) return;
+        chartFolder = picked;
+        QSettings().setValue(QStringLiteral("bench/folder"), picked);
+        charts =
+            QDir(picked).entryInfoList({QStringLiteral("bench_*.png")}, QDir::Files, QDir::Time);
+    }
+    if (charts.isEmpty()) {
+        showError(
+            tr("No bench_*.png in %1. Run: paperfold bench --output-dir %1").arg(chartFolder));
+        return;
+    }
+    lastChart_ = charts.first().absoluteFilePath();
+    auto* dialog = new QDialog(this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setWindowTitle(charts.first().fileName());
+    auto* layout = new QVBoxLayout(dialog);
+    auto* picture = new QLabel(dialog);
+    picture->setPixmap(QPixmap(lastChart_));
+    auto* scroll = new QScrollArea(dialog);
+    scroll->setWidget(picture);
+    layout->addWidget(scroll);
+    dialog->resize(1000, 640);
+    dialog->show();
 }
 
 void MainWindow::showHelp() {

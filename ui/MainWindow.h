@@ -25,6 +25,7 @@ class QUndoView;
 namespace pf {
 
 class ParameterPanel;
+class SolverPanel;
 class SimulationThread;
 class Viewport;
 
@@ -50,6 +51,11 @@ class MainWindow : public QMainWindow {
     SimulationThread* simulation() const { return sim_.get(); }
     Viewport* viewport() const { return viewport_; }
     ParameterPanel* panel() const { return panel_; }
+    SolverPanel* solverPanel() const { return solver_; }
+    // Where Open Latest Chart looks for bench_*.png (the folder `paperfold bench` wrote).
+    QString chartFolder;
+    // The chart it showed last (tests read it).
+    QString lastChart() const { return lastChart_; }
     QUndoStack* undoStack() const { return undo_; }
     const SimParams& params() const { return params_; }
     QString currentFile() const { return file_; }
@@ -89,14 +95,17 @@ class MainWindow : public QMainWindow {
     void exportImage();
     void exportMesh();
     void showHelp();
+    void openLatestChart();
     World sceneWorld(const QString& scene) const;
 
     std::unique_ptr<SimulationThread> sim_;
     Viewport* viewport_ = nullptr;
     ParameterPanel* panel_ = nullptr;
+    SolverPanel* solver_ = nullptr;
+    QString lastChart_;
     QUndoStack* undo_ = nullptr;
     QUndoView* undoView_ = nullptr;
-    QDockWidget *panelDock_ = nullptr, *historyDock_ = nullptr;
+    QDockWidget *panelDock_ = nullptr, *historyDock_ = nullptr, *solverDock_ = nullptr;
     QToolBar* toolBar_ = nullptr;
     QMenu *fileMenu_ = nullptr, *newMenu_ = nullptr, *recentMenu_ = nullptr, *editMenu_ = nullptr,
           *viewMenu_ = nullptr, *overlayMenu_ = nullptr, *languageMenu_ = nullptr,

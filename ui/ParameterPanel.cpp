@@ -1,9 +1,5 @@
 #include "ParameterPanel.h"
 
-#include "Integrator.h"
-
-#include <QCheckBox>
-#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QGridLayout>
@@ -29,17 +25,6 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     advanced_->setCheckable(true);
     advanced_->setChecked(false);
     auto* adv = new QGridLayout(advanced_);
-    integratorLabel_ = new QLabel(advanced_);
-    integrator_ = new QComboBox(advanced_);
-    for (const auto& name : integratorNames()) integrator_->addItem(QString::fromStdString(name));
-    iterationsLabel_ = new QLabel(advanced_);
-    iterations_ = new QSpinBox(advanced_);
-    iterations_->setRange(0, 50);
-    gravityOutside_ = new QCheckBox(advanced_);
-    dtLabel_ = new QLabel(advanced_);
-    stepsPerSecond_ = new QSpinBox(advanced_);
-    stepsPerSecond_->setRange(60, 7680);
-    stepsPerSecond_->setSingleStep(60);
     stiffnessLabel_ = new QLabel(advanced_);
     stiffness_ = new QDoubleSpinBox(advanced_);
     stiffness_->setRange(1.0, 1e5);
@@ -68,16 +53,12 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     sheetNote_->setWordWrap(true);
     int r = 0;
     for (auto [label, field] :
-         std::initializer_list<std::pair<QLabel*, QWidget*>>{{integratorLabel_, integrator_},
-                                                             {iterationsLabel_, iterations_},
-                                                             {dtLabel_, stepsPerSecond_},
-                                                             {stiffnessLabel_, stiffness_},
+         std::initializer_list<std::pair<QLabel*, QWidget*>>{{stiffnessLabel_, stiffness_},
                                                              {bendingLabel_, bending_},
                                                              {resolutionLabel_, resolution_}}) {
         adv->addWidget(label, r, 0);
         adv->addWidget(field, r++, 1, 1, 2);
     }
-    adv->addWidget(gravityOutside_, r++, 0, 1, 3);
     adv->addWidget(sizeLabel_, r, 0);
     adv->addWidget(width_, r, 1);
     adv->addWidget(length_, r++, 2);
@@ -89,22 +70,6 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(advanced_);
     layout->addStretch();
 
-    connect(integrator_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-        params_.integrator = name.toStdString();
-        emitEdit(QStringLiteral("integrator"));
-    });
-    connect(iterations_, &QSpinBox::valueChanged, this, [this](int k) {
-        params_.iterations = k;
-        emitEdit(QStringLiteral("iterations"));
-    });
-    connect(gravityOutside_, &QCheckBox::toggled, this, [this](bool on) {
-        params_.gravityOutsideFilter = on;
-        emitEdit(QStringLiteral("gravity"));
-    });
-    connect(stepsPerSecond_, &QSpinBox::valueChanged, this, [this](int n) {
-        params_.dt = 1.0 / n;
-        emitEdit(QStringLiteral("dt"));
-    });
     connect(stiffness_, &QDoubleSpinBox::valueChanged, this, [this](double k) {
         params_.stiffness[static_cast<int>(SpringKind::Structural)] = k;
         params_.stiffness[static_cast<int>(SpringKind::Crease)] = k;
@@ -192,10 +157,6 @@ void ParameterPanel::showParams(const SimParams& params) {
     psi_.slider->setValue(static_cast<int>(std::lround(params.psi * psi_.scale)));
     sigma_.spin->setValue(params.sigma);
     sigma_.slider->setValue(static_cast<int>(std::lround(params.sigma * sigma_.scale)));
-    integrator_->setCurrentText(QString::fromStdString(params.integrator));
-    iterations_->setValue(params.iterations);
-    gravityOutside_->setChecked(params.gravityOutsideFilter);
-    stepsPerSecond_->setValue(static_cast<int>(std::lround(1.0 / params.dt)));
     stiffness_->setValue(params.stiffnessOf(SpringKind::Structural));
     bending_->setValue(params.stiffnessOf(SpringKind::Bending));
     updating_ = false;
@@ -251,16 +212,6 @@ void ParameterPanel::retranslate() {
         row->spin->setToolTip(row->label->toolTip());
     }
     advanced_->setTitle(tr("Advanced"));
-    integratorLabel_->setText(tr("Integrator"));
-    integrator_->setToolTip(tr("jacobi: the paper's approximate implicit step (Eq. 6); "
-                               "jacobi-scalar: the same with k·I blocks; symplectic: explicit; "
-                               "backward-euler: the exact implicit step (slow, the reference)."));
-    iterationsLabel_->setText(tr("Jacobi sweeps"));
-    dtLabel_->setText(tr("Steps per second"));
-    gravityOutside_->setText(tr("Gravity outside the implicit filter"));
-    gravityOutside_->setToolTip(tr("Start the Jacobi iteration at Δv = h·g. The paper's step "
-                                   "divides gravity by W, so a hanging sheet falls at a fraction "
-                                   "of g; this keeps free fall exact at the same stability."));
     stiffnessLabel_->setText(tr("Stretch stiffness"));
     bendingLabel_->setText(tr("Bending stiffness"));
     resolutionLabel_->setText(tr("Resolution"));

@@ -15,8 +15,8 @@ class QSpinBox;
 
 namespace pf {
 
-// The knobs an artist turns: φ, ψ, σ and the tool radius up front; integrator,
-// sweeps, time step, stiffness and the sheet's size and resolution under Advanced.
+// The knobs an artist turns: φ, ψ, σ and the tool radius up front; stiffness and
+// the sheet's size and resolution under Advanced. The solver has its own dock.
 class ParameterPanel : public QWidget {
     Q_OBJECT
 
@@ -35,8 +35,6 @@ class ParameterPanel : public QWidget {
     QSlider* phiSlider() const { return phi_.slider; }
     QSlider* psiSlider() const { return psi_.slider; }
     QSlider* sigmaSlider() const { return sigma_.slider; }
-    QComboBox* integratorBox() const { return integrator_; }
-    QSpinBox* iterationsBox() const { return iterations_; }
 
   signals:
     // A user edit. `drag` numbers a slider drag: edits with the same drag number
@@ -63,13 +61,8 @@ class ParameterPanel : public QWidget {
     SimParams params_;
     SliderRow phi_, psi_, sigma_, radius_;
     QGroupBox* advanced_ = nullptr;
-    QLabel *integratorLabel_ = nullptr, *iterationsLabel_ = nullptr, *dtLabel_ = nullptr,
-           *stiffnessLabel_ = nullptr, *bendingLabel_ = nullptr, *resolutionLabel_ = nullptr,
+    QLabel *stiffnessLabel_ = nullptr, *bendingLabel_ = nullptr, *resolutionLabel_ = nullptr,
            *sizeLabel_ = nullptr;
-    QComboBox* integrator_ = nullptr;
-    QSpinBox* iterations_ = nullptr;
-    QCheckBox* gravityOutside_ = nullptr;
-    QSpinBox* stepsPerSecond_ = nullptr;
     QDoubleSpinBox* stiffness_ = nullptr;
     QDoubleSpinBox* bending_ = nullptr;
     QSpinBox* resolution_ = nullptr;

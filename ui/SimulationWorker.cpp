@@ -190,6 +190,8 @@ void SimulationWorker::publish(double stepSeconds) {
     const SheetStats stats = computeStats(w.sheet);
     st.breaks = stats.breaks;
     st.hinges = stats.hinges;
+    st.maxStrain = stats.maxStrain;
+    st.rmsStrain = stats.rmsStrain;
     st.playing = playing_;
     owner_->publish(std::make_shared<const SheetSnapshot>(makeSnapshot(w)), st);
 }

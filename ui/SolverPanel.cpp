@@ -1,0 +1,117 @@
+#include "SolverPanel.h"
+
+#include "Integrator.h"
+#include "SimulationThread.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QEvent>
+#include <QGridLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+#include <cmath>
+
+namespace pf {
+
+SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
+    auto* grid = new QGridLayout(this);
+    integratorLabel_ = new QLabel(this);
+    integrator_ = new QComboBox(this);
+    for (const auto& name : integratorNames()) integrator_->addItem(QString::fromStdString(name));
+    iterationsLabel_ = new QLabel(this);
+    iterations_ = new QSpinBox(this);
+    iterations_->setRange(0, 50);
+    dtLabel_ = new QLabel(this);
+    stepsPerSecond_ = new QSpinBox(this);
+    stepsPerSecond_->setRange(60, 7680);
+    stepsPerSecond_->setSingleStep(60);
+    gravityOutside_ = new QCheckBox(this);
+    stepTimeLabel_ = new QLabel(this);
+    stepTime_ = new QLabel(this);
+    strainTitle_ = new QLabel(this);
+    strain_ = new QLabel(this);
+    openChart_ = new QPushButton(this);
+    int r = 0;
+    for (auto [label, field] :
+         std::initializer_list<std::pair<QLabel*, QWidget*>>{{integratorLabel_, integrator_},
+                                                             {iterationsLabel_, iterations_},
+                                                             {dtLabel_, stepsPerSecond_}}) {
+        grid->addWidget(label, r, 0);
+        grid->addWidget(field, r++, 1);
+    }
+    grid->addWidget(gravityOutside_, r++, 0, 1, 2);
+    grid->addWidget(stepTimeLabel_, r, 0);
+    grid->addWidget(stepTime_, r++, 1);
+    grid->addWidget(strainTitle_, r, 0);
+    grid->addWidget(strain_, r++, 1);
+    grid->addWidget(openChart_, r++, 0, 1, 2);
+    grid->setRowStretch(r, 1);
+
+    connect(integrator_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+        params_.integrator = name.toStdString();
+        emitEdit(QStringLiteral("integrator"));
+    });
+    connect(iterations_, &QSpinBox::valueChanged, this, [this](int k) {
+        params_.iterations = k;
+        emitEdit(QStringLiteral("iterations"));
+    });
+    connect(stepsPerSecond_, &QSpinBox::valueChanged, this, [this](int n) {
+        params_.dt = 1.0 / n;
+        emitEdit(QStringLiteral("dt"));
+    });
+    connect(gravityOutside_, &QCheckBox::toggled, this, [this](bool on) {
+        params_.gravityOutsideFilter = on;
+        emitEdit(QStringLiteral("gravity"));
+    });
+    connect(openChart_, &QPushButton::clicked, this, &SolverPanel::openChartRequested);
+    retranslate();
+}
+
+void SolverPanel::emitEdit(const QString& what) {
+    if (updating_) return;
+    emit paramsEdited(params_, what, --edits_); // each edit is its own undo step
+}
+
+void SolverPanel::showParams(const SimParams& params) {
+    updating_ = true;
+    params_ = params;
+    integrator_->setCurrentText(QString::fromStdString(params.integrator));
+    iterations_->setValue(params.iterations);
+    stepsPerSecond_->setValue(static_cast<int>(std::lround(1.0 / params.dt)));
+    gravityOutside_->setChecked(params.gravityOutsideFilter);
+    updating_ = false;
+}
+
+void SolverPanel::showStatus(const SimulationStatus& status) {
+    stepTime_->setText(tr("%1 µs").arg(status.stepSeconds * 1e6, 0, 'f', 0));
+    strain_->setText(tr("max %1 %, RMS %2 %")
+                         .arg(100.0 * status.maxStrain, 0, 'f', 2)
+                         .arg(100.0 * status.rmsStrain, 0, 'f', 3));
+}
+
+void SolverPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(event);
+}
+
+void SolverPanel::retranslate() {
+    integratorLabel_->setText(tr("Integrator"));
+    integrator_->setToolTip(tr("jacobi: the paper's approximate implicit step (Eq. 6); "
+                               "jacobi-scalar: the same with k·I blocks; symplectic: explicit; "
+                               "backward-euler: the exact implicit step (slow, the reference)."));
+    iterationsLabel_->setText(tr("Jacobi sweeps"));
+    dtLabel_->setText(tr("Steps per second"));
+    gravityOutside_->setText(tr("Gravity outside the implicit filter"));
+    gravityOutside_->setToolTip(tr("Start the Jacobi iteration at Δv = h·g. The paper's step "
+                                   "divides gravity by W, so a hanging sheet falls at a fraction "
+                                   "of g; this keeps free fall exact at the same stability."));
+    stepTimeLabel_->setText(tr("Step time"));
+    strainTitle_->setText(tr("Strain"));
+    strain_->setToolTip(tr("|l/l0 - 1| over the structural springs, live"));
+    openChart_->setText(tr("Open Latest Chart…"));
+    openChart_->setToolTip(
+        tr("Show the newest speed–accuracy chart written by 'paperfold bench'."));
+}
+
+} // namespace pf

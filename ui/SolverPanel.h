@@ -1,0 +1,58 @@
+#pragma once
+
+#include "Params.h"
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+
+namespace pf {
+
+struct SimulationStatus;
+
+// The Solver dock: which integrator steps the sheet and how, what it costs and how
+// far the springs stretch right now, and the latest speed–accuracy chart.
+class SolverPanel : public QWidget {
+    Q_OBJECT
+
+  public:
+    explicit SolverPanel(QWidget* parent = nullptr);
+
+    void showParams(const SimParams& params); // without emitting
+    void showStatus(const SimulationStatus& status);
+
+    QComboBox* integratorBox() const { return integrator_; }
+    QSpinBox* iterationsBox() const { return iterations_; }
+    QCheckBox* gravityBox() const { return gravityOutside_; }
+    QLabel* strainLabel() const { return strain_; }
+
+  signals:
+    void paramsEdited(const pf::SimParams& params, const QString& what, int drag);
+    void openChartRequested();
+
+  protected:
+    void changeEvent(QEvent* event) override;
+
+  private:
+    void retranslate();
+    void emitEdit(const QString& what);
+
+    SimParams params_;
+    int edits_ = 0;
+    bool updating_ = false;
+    QLabel *integratorLabel_ = nullptr, *iterationsLabel_ = nullptr, *dtLabel_ = nullptr,
+           *stepTimeLabel_ = nullptr, *strainTitle_ = nullptr;
+    QComboBox* integrator_ = nullptr;
+    QSpinBox* iterations_ = nullptr;
+    QSpinBox* stepsPerSecond_ = nullptr;
+    QCheckBox* gravityOutside_ = nullptr;
+    QLabel* stepTime_ = nullptr;
+    QLabel* strain_ = nullptr;
+    QPushButton* openChart_ = nullptr;
+};
+
+} // namespace pf
