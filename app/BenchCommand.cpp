@@ -30,7 +30,7 @@ struct Config {
 
 struct Row {
     QString family, scene;
-    double dt = 0, cost = 0, error = INFINITY, strain = 0, fall = 0;
+    double dt = 0, cost = 0, error = INFINITY, strain = 0, fall = 0, energy = 0;
     int sweeps = 0;
     bool stable = true;
 };
@@ -219,6 +219,7 @@ int runBench(const QStringList& arguments) {
                 r.strain = computeStats(last.sheet).maxStrain;
             }
             r.fall = freeFallRatio(c.params);
+            r.energy = energyRatio(scene.toStdString(), resolution, c.params, horizon);
             rows.push_back(r);
         }
     }
@@ -228,7 +229,7 @@ int runBench(const QStringList& arguments) {
         throw UsageError{QStringLiteral("cannot write %1").arg(csv.fileName())};
     QTextStream c(&csv);
     c << "scene,method,dt,substeps_per_60Hz_frame,sweeps,cost_s_per_s,trajectory_error,max_strain,"
-         "free_fall_ratio,stable\n";
+         "free_fall_ratio,energy_ratio_undamped,stable\n";
     out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7\n")
                .arg(QStringLiteral("scene"), -9)
                .arg(QStringLiteral("method"), -36)
@@ -240,7 +241,7 @@ int runBench(const QStringList& arguments) {
     for (const Row& r : rows) {
         const long sub = std::lround((1.0 / 60) / r.dt);
         c << r.scene << ',' << r.family << ',' << r.dt << ',' << sub << ',' << r.sweeps << ','
-          << r.cost << ',' << r.error << ',' << r.strain << ',' << r.fall << ','
+          << r.cost << ',' << r.error << ',' << r.strain << ',' << r.fall << ',' << r.energy << ','
           << (r.stable ? 1 : 0) << '\n';
         out << QStringLiteral("%1 %2 1/%3 %4 %5 %6 %7\n")
                    .arg(r.scene, -9)

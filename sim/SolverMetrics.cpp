@@ -71,4 +71,28 @@ double freeFallRatio(const SimParams& settings) {
     return -(p / m) / (settings.gravity * seconds);
 }
 
+double mechanicalEnergy(const World& world) {
+    const Sheet& s = world.sheet;
+    const auto& V = s.verts;
+    double e = 0.0;
+    for (Index i = 0; i < V.size(); ++i)
+        e += V.m[i] * (0.5 * V.v[i].squaredNorm() + world.params.gravity * V.x[i].y());
+    for (Index k = 0; k < s.springs.size(); ++k) {
+        const double stretch =
+            (V.x[s.springs.a[k]] - V.x[s.springs.b[k]]).norm() - s.springs.rest[k];
+        e += 0.5 * world.params.stiffnessOf(s.springs.kind[k]) * stretch * stretch;
+    }
+    return e;
+}
+
+double energyRatio(const std::string& scene, int resolution, const SimParams& settings,
+                   double seconds) {
+    SimParams undamped = settings;
+    undamped.damping.fill(0.0);
+    World w = labWorld(scene, resolution, undamped);
+    const double e0 = mechanicalEnergy(w);
+    if (!advanceFor(w, seconds)) return NAN;
+    return mechanicalEnergy(w) / e0;
+}
+
 } // namespace pf

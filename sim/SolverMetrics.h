@@ -25,4 +25,13 @@ double trajectoryError(const Sheet& run, const Sheet& reference);
 // gives 1; the paper's step loses most of it (solver-facts.md).
 double freeFallRatio(const SimParams& settings);
 
+// Total mechanical energy: kinetic, spring (½ k (l - L)² per spring) and gravitational
+// (m g y, the ground at y = 0), in joules.
+double mechanicalEnergy(const World& world);
+
+// E(t)/E(0) after `seconds` of `scene` with damping off (exact integration keeps 1;
+// implicit steps lose energy, unstable ones gain it). NaN if the run diverged.
+double energyRatio(const std::string& scene, int resolution, const SimParams& settings,
+                   double seconds);
+
 } // namespace pf

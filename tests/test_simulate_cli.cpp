@@ -284,14 +284,15 @@ class TestSimulateCli : public QObject {
         const QStringList lines =
             QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 1 + 2 * 6 * 3); // header + 2 scenes × 6 methods × 3 steps
-        QMap<QString, QList<double>> error, fall, dropError;
+        QMap<QString, QList<double>> error, fall, dropError, energy;
         for (const QString& line : lines.mid(1)) {
             const QStringList f = line.split(QLatin1Char(','));
-            QCOMPARE(f.size(), 10);
+            QCOMPARE(f.size(), 11);
             if (f[0] == QLatin1String("drop")) {
                 dropError[f[1]] << f[6].toDouble();
                 continue;
             }
+            energy[f[1]] << f[9].toDouble();
             error[f[1]] << f[6].toDouble();
             fall[f[1]] << f[8].toDouble();
         }
@@ -306,6 +307,11 @@ class TestSimulateCli : public QObject {
                      qPrintable(QStringLiteral("%1 vs %2").arg(fixed[k]).arg(paper[k])));
         // The exact method converges as the step shrinks; the fix restores free fall.
         const auto be = error.value(QStringLiteral("backward Euler (CG)"));
+        // Implicit Euler dissipates: undamped, it never gains energy, and loses less
+        // as the step shrinks.
+        const auto beEnergy = energy.value(QStringLiteral("backward Euler (CG)"));
+        QVERIFY(beEnergy.size() == 3 && beEnergy[2] <= 1.0 + 1e-6 && beEnergy[0] < beEnergy[1] &&
+                beEnergy[1] < beEnergy[2]);
         QVERIFY(be.size() == 3 && be[0] > be[1] && be[1] > be[2]);
         for (double a : fall.value(QStringLiteral("jacobi K=1 + gravity outside")))
             QVERIFY(std::abs(a - 1.0) < 1e-6);
