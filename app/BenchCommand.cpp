@@ -1,6 +1,8 @@
 #include "BenchCommand.h"
 
 #include "CommandLine.h"
+#include "OutputFile.h"
+#include "PngFile.h"
 #include "SheetStats.h"
 #include "SolverMetrics.h"
 
@@ -8,7 +10,6 @@
 #include <QChartView>
 #include <QDir>
 #include <QElapsedTimer>
-#include <QFile>
 #include <QLegend>
 #include <QLineSeries>
 #include <QLogValueAxis>
@@ -83,7 +84,7 @@ std::vector<const Row*> paretoFront(const std::vector<Row>& rows) {
     return front;
 }
 
-void drawChart(const std::vector<Row>& rows, const QString& scene, const QString& path) {
+QImage drawChart(const std::vector<Row>& rows, const QString& scene) {
     auto* chart = new QChart;
     chart->setTitle(
         QStringLiteral("%1: cost against trajectory error (log–log; dashed: Pareto front)")
@@ -139,7 +140,7 @@ void drawChart(const std::vector<Row>& rows, const QString& scene, const QString
     QChartView view(chart);
     view.setRenderHint(QPainter::Antialiasing);
     view.resize(1400, 800);
-    view.grab().save(path, "PNG");
+    return view.grab().toImage();
 }
 
 } // namespace
@@ -174,6 +175,15 @@ int runBench(const QStringList& arguments) {
     const QDir dir(parser.value(QStringLiteral("output-dir")));
     if (!dir.exists() && !QDir().mkpath(dir.path()))
         throw UsageError{QStringLiteral("--output-dir: cannot create '%1'").arg(dir.path())};
+
+    const QString csvPath = dir.filePath(QStringLiteral("bench.csv"));
+    auto chartPath = [&](const QString& scene) {
+        return dir.filePath(QStringLiteral("bench_%1.png").arg(scene));
+    };
+    // Every target is checked before minutes of work, not after them.
+    requireWritable(QStringLiteral("output-dir"), csvPath);
+    for (const QString& scene : scenes)
+        requireWritable(QStringLiteral("output-dir"), chartPath(scene));
 
     QTextStream out(stdout), err(stderr);
     std::vector<Row> rows;
@@ -224,9 +234,7 @@ int runBench(const QStringList& arguments) {
         }
     }
 
-    QFile csv(dir.filePath(QStringLiteral("bench.csv")));
-    if (!csv.open(QIODevice::WriteOnly | QIODevice::Text))
-        throw UsageError{QStringLiteral("cannot write %1").arg(csv.fileName())};
+    QString csv;
     QTextStream c(&csv);
     c << "scene,method,dt,substeps_per_60Hz_frame,sweeps,cost_s_per_s,trajectory_error,max_strain,"
          "free_fall_ratio,energy_ratio_undamped,stable\n";
@@ -253,9 +261,18 @@ int runBench(const QStringList& arguments) {
                    .arg(r.strain, 8, 'g', 3)
                    .arg(r.fall, 8, 'f', 4);
     }
+    c.flush();
+    QString error;
+    if (!writeOutputFile(csvPath, csv.toUtf8(), &error)) {
+        err << "paperfold: " << error << '\n';
+        return 2;
+    }
     for (const QString& scene : scenes)
-        drawChart(rows, scene, dir.filePath(QStringLiteral("bench_%1.png").arg(scene)));
-    out << "wrote " << csv.fileName() << " and the charts in " << dir.path() << '\n';
+        if (!writePng(drawChart(rows, scene), chartPath(scene), &error)) {
+            err << "paperfold: " << error << '\n';
+            return 2;
+        }
+    out << "wrote " << csvPath << " and the charts in " << dir.path() << '\n';
     return 0;
 }
 

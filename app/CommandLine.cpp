@@ -1,5 +1,7 @@
 #include "CommandLine.h"
 
+#include "OutputFile.h"
+
 #include <QStringList>
 #include <QTextStream>
 #include <cmath>
@@ -42,6 +44,11 @@ std::optional<std::uint64_t> seedOption(const QCommandLineParser& parser, const 
         throw UsageError{
             QStringLiteral("--%1: '%2' is not a whole number from 0 to 2^64-1").arg(name, text)};
     return static_cast<std::uint64_t>(value);
+}
+
+void requireWritable(const QString& option, const QString& path, const QStringList& inputs) {
+    const QString problem = checkOutputPath(path, inputs);
+    if (!problem.isEmpty()) throw UsageError{QStringLiteral("--%1: %2").arg(option, problem)};
 }
 
 void rejectExtraArguments(const QCommandLineParser& parser, int allowed) {

@@ -2,6 +2,7 @@
 
 #include <QCommandLineParser>
 #include <QString>
+#include <QStringList>
 #include <cstdint>
 #include <optional>
 
@@ -18,6 +19,11 @@ std::optional<double> realOption(const QCommandLineParser& parser, const QString
 std::optional<long long> integerOption(const QCommandLineParser& parser, const QString& name,
                                        long long min, long long max);
 std::optional<std::uint64_t> seedOption(const QCommandLineParser& parser, const QString& name);
+
+// Throws UsageError, naming the option, unless `path` may be written (OutputFile.h:
+// a regular file or a new name in a writable folder, none of `inputs`). Commands call it
+// before long work starts.
+void requireWritable(const QString& option, const QString& path, const QStringList& inputs = {});
 
 // Throws UsageError for positional arguments beyond the subcommand itself.
 void rejectExtraArguments(const QCommandLineParser& parser, int allowed);

@@ -1,5 +1,6 @@
 #include "EditorMain.h"
 
+#include "DisplayCheck.h"
 #include "MainWindow.h"
 #include "Viewport.h"
 
@@ -12,6 +13,12 @@
 namespace pf {
 
 int runEditor(int argc, char* argv[]) {
+    if (const QString problem = displayProblem(); !problem.isEmpty()) {
+        QTextStream(stderr) << "paperfold: " << problem
+                            << ".\nRun it in a desktop session, or use the headless commands "
+                               "(paperfold --help lists them; render needs no display).\n";
+        return 2;
+    }
     // Every GL context (the viewport's) must be 3.3 core; set before the app exists.
     QSurfaceFormat::setDefaultFormat(Viewport::requiredFormat());
     QApplication app(argc, argv);

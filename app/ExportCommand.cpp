@@ -35,6 +35,8 @@ int runExport(const QStringList& arguments) {
     if (!meshFormatForPath(output, &format))
         throw UsageError{
             QStringLiteral("--output: '%1' does not end in .obj, .ply or .glb").arg(output)};
+    const QStringList inputs = worldInputs(parser);
+    requireWritable(QStringLiteral("output"), output, inputs);
     const int level = static_cast<int>(
         integerOption(parser, QStringLiteral("subdiv"), 0, kMaxSubdivisionLevel).value_or(2));
     const long long steps =
@@ -49,7 +51,8 @@ int runExport(const QStringList& arguments) {
         }
     const SurfaceMesh mesh = subdivideSheet(sim.world().sheet, sim.world().params.sigma, level);
     QString error;
-    if (!writeSurface(mesh, output, format, !parser.isSet(QStringLiteral("no-normals")), &error)) {
+    if (!writeSurface(mesh, output, format, !parser.isSet(QStringLiteral("no-normals")), &error,
+                      inputs)) {
         QTextStream(stderr) << "paperfold: " << error << '\n';
         return 2;
     }

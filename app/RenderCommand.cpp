@@ -3,6 +3,8 @@
 #include "CommandLine.h"
 #include "ImageCompare.h"
 #include "OffscreenRenderer.h"
+#include "OutputPattern.h"
+#include "PngFile.h"
 #include "SheetSnapshot.h"
 #include "Simulation.h"
 #include "WorldOptions.h"
@@ -11,7 +13,7 @@
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QTextStream>
-#include <cstdio>
+#include <cmath>
 #include <unistd.h>
 
 namespace pf::cli {
@@ -37,20 +39,21 @@ OrbitCamera frameCamera(const SheetSnapshot& snap, const QCommandLineParser& par
             camera.pitch = parts[1].toDouble(&ok[1]);
             camera.distance = parts[2].toDouble(&ok[2]);
         }
-        if (!(ok[0] && ok[1] && ok[2]) || !std::isfinite(camera.yaw) ||
-            std::abs(camera.pitch) > 89.9 || !(camera.distance > 0.01 && camera.distance < 20.0))
-            throw UsageError{QStringLiteral("--camera: expected yaw,pitch,distance in degrees, "
-                                            "degrees (|pitch| ≤ 89.9) and metres (0.01-20)")};
+        // Written so that NaN fails every comparison and is refused.
+        const bool inRange = ok[0] && ok[1] && ok[2] && std::abs(camera.yaw) <= 360.0 &&
+                             std::abs(camera.pitch) <= 89.9 && camera.distance >= 0.01 &&
+                             camera.distance <= 20.0;
+        if (!inRange)
+            throw UsageError{QStringLiteral("--camera: expected yaw,pitch,distance in degrees "
+                                            "(|yaw| ≤ 360), degrees (|pitch| ≤ 89.9) and metres "
+                                            "(0.01-20)")};
     }
+    // A sheet whose points lie too far out renders as empty sky in single precision.
+    if (!camera.target.allFinite() || camera.target.norm() > 1e3 ||
+        !std::isfinite(camera.distance) || camera.distance > 1e3)
+        throw UsageError{QStringLiteral("the sheet lies too far from the origin to render "
+                                        "(more than 1 km)")};
     return camera;
-}
-
-QString framePath(const QString& pattern, int index) {
-    if (!pattern.contains(QLatin1Char('%'))) return pattern;
-    QByteArray buffer(pattern.size() + 32, '\0');
-    std::snprintf(buffer.data(), static_cast<std::size_t>(buffer.size()),
-                  pattern.toLocal8Bit().constData(), index);
-    return QString::fromLocal8Bit(buffer.constData());
 }
 
 } // namespace
@@ -132,13 +135,26 @@ int runRender(const QStringList& arguments) {
     const bool sequence = frames > 0;
     if (sequence && parser.isSet(QStringLiteral("reference")))
         throw UsageError{QStringLiteral("--reference compares a single image; leave out --frames")};
-    if (sequence && frames > 1 && !output.contains(QLatin1Char('%')))
+    QString patternError;
+    const std::optional<OutputPattern> pattern = OutputPattern::parse(output, &patternError);
+    if (!pattern) throw UsageError{QStringLiteral("--output: ") + patternError};
+    if (sequence && frames > 1 && !pattern->hasField())
         throw UsageError{
             QStringLiteral("--output needs a pattern such as frame_%04d.png with --frames")};
     const double threshold =
         realOption(parser, QStringLiteral("threshold"), 0.0, 1.0).value_or(0.01);
-    if (!QFileInfo(framePath(output, 0)).absoluteDir().exists())
-        throw UsageError{QStringLiteral("--output: the folder of '%1' does not exist").arg(output)};
+    QStringList inputs = worldInputs(parser);
+    const QString refPath = parser.value(QStringLiteral("reference"));
+    if (parser.isSet(QStringLiteral("reference"))) inputs << refPath;
+    // Every target is checked before any work, so a bad one fails at once.
+    const int count = sequence ? frames : 1;
+    for (int f = 0; f < count; ++f)
+        requireWritable(QStringLiteral("output"), pattern->path(f), inputs);
+    const QString diffPath = QFileInfo(pattern->path(0)).path() + QLatin1Char('/') +
+                             QFileInfo(pattern->path(0)).completeBaseName() +
+                             QStringLiteral(".diff.png");
+    if (parser.isSet(QStringLiteral("reference")))
+        requireWritable(QStringLiteral("output"), diffPath, inputs + QStringList{output});
 
     Simulation sim(worldFromOptions(parser));
     QTextStream out(stdout), err(stderr);
@@ -163,7 +179,6 @@ int runRender(const QStringList& arguments) {
     const OrbitCamera camera = frameCamera(first, parser, double(width) / height);
     const bool progress = isatty(fileno(stderr));
     QElapsedTimer timer;
-    const int count = sequence ? frames : 1;
     double renderSeconds = 0;
     for (int f = 0; f < count; ++f) {
         if (f > 0 && !advance(every)) {
@@ -174,9 +189,10 @@ int runRender(const QStringList& arguments) {
         timer.start();
         const QImage image = renderer->render(snap, camera, options);
         renderSeconds += timer.nsecsElapsed() * 1e-9;
-        const QString path = framePath(output, f);
-        if (!image.save(path, "PNG")) {
-            err << "paperfold: cannot write " << path << '\n';
+        const QString path = pattern->path(f);
+        QString error;
+        if (!writePng(image, path, &error, inputs)) {
+            err << (sequence && progress ? "\n" : "") << "paperfold: " << error << '\n';
             return 2;
         }
         if (sequence && progress)
@@ -188,7 +204,6 @@ int runRender(const QStringList& arguments) {
         else if (sequence && (f + 1) % std::max(1, count / 10) == 0)
             err << QStringLiteral("frame %1/%2\n").arg(f + 1).arg(count);
         if (!sequence && parser.isSet(QStringLiteral("reference"))) {
-            const QString refPath = parser.value(QStringLiteral("reference"));
             const QImage reference(refPath);
             if (reference.isNull()) {
                 err << "paperfold: cannot read the reference image " << refPath << '\n';
@@ -200,10 +215,11 @@ int runRender(const QStringList& arguments) {
                        .arg(100.0 * d.differingFraction, 0, 'f', 3)
                        .arg(100.0 * threshold, 0, 'f', 3);
             if (d.differingFraction > threshold) {
-                const QString diffPath = QFileInfo(path).path() + QLatin1Char('/') +
-                                         QFileInfo(path).completeBaseName() +
-                                         QStringLiteral(".diff.png");
-                if (!d.map.isNull()) d.map.save(diffPath, "PNG");
+                if (!d.map.isNull() && !writePng(d.map, diffPath, &error, inputs)) {
+                    err << "paperfold: the image does not match " << refPath << "; " << error
+                        << '\n';
+                    return 4;
+                }
                 err << "paperfold: the image does not match " << refPath << "; differences in "
                     << diffPath << '\n';
                 return 4;

@@ -60,6 +60,9 @@ int runSimulate(const QStringList& arguments) {
         {QStringLiteral("stats"), QStringLiteral("Print statistics as one JSON object.")},
     });
     if (!parseCommand(parser, arguments)) return 0;
+    const QStringList inputs = worldInputs(parser);
+    if (parser.isSet(QStringLiteral("save")))
+        requireWritable(QStringLiteral("save"), parser.value(QStringLiteral("save")), inputs);
     World world = worldFromOptions(parser);
     const long long steps =
         integerOption(parser, QStringLiteral("steps"), 0, 1'000'000'000).value_or(600);
@@ -80,7 +83,7 @@ int runSimulate(const QStringList& arguments) {
     QTextStream err(stderr);
     if (parser.isSet(QStringLiteral("save"))) {
         QString error;
-        if (!saveWorld(sim.world(), parser.value(QStringLiteral("save")), &error)) {
+        if (!saveWorld(sim.world(), parser.value(QStringLiteral("save")), &error, inputs)) {
             err << "paperfold: " << error << '\n';
             return 2;
         }

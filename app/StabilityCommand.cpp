@@ -1,10 +1,11 @@
 #include "StabilityCommand.h"
 
 #include "CommandLine.h"
+#include "OutputFile.h"
+#include "PngFile.h"
 #include "StabilityProbe.h"
 
 #include <QDir>
-#include <QFile>
 #include <QImage>
 #include <QPainter>
 #include <QTextStream>
@@ -111,9 +112,14 @@ int runStability(const QStringList& arguments) {
     const QDir dir(parser.value(QStringLiteral("output-dir")));
     if (!dir.exists() && !QDir().mkpath(dir.path()))
         throw UsageError{QStringLiteral("--output-dir: cannot create '%1'").arg(dir.path())};
-    QFile csv(dir.filePath(QStringLiteral("stability.csv")));
-    if (!csv.open(QIODevice::WriteOnly | QIODevice::Text))
-        throw UsageError{QStringLiteral("cannot write %1").arg(csv.fileName())};
+    const QString csvPath = dir.filePath(QStringLiteral("stability.csv"));
+    auto pngPath = [&](const Method& m) {
+        return dir.filePath(QStringLiteral("stability_%1.png").arg(QLatin1String(m.name)));
+    };
+    // Every target is checked before the minute of work, not after it.
+    requireWritable(QStringLiteral("output-dir"), csvPath);
+    for (const Method& m : kMethods) requireWritable(QStringLiteral("output-dir"), pngPath(m));
+    QString csv;
     QTextStream out(&csv), err(stderr);
     out << "method,scene,dt,stiffness_scale,a,outcome,steps,end_strain,peak_kinetic_J\n";
     for (const Method& m : kMethods) {
@@ -140,9 +146,12 @@ int runStability(const QStringList& arguments) {
                         << res.endStrain << ',' << res.peakKinetic << '\n';
                 }
         }
-        const QString png =
-            dir.filePath(QStringLiteral("stability_%1.png").arg(QLatin1String(m.name)));
-        heatMap(m, steps, scales, results).save(png, "PNG");
+        const QString png = pngPath(m);
+        QString error;
+        if (!writePng(heatMap(m, steps, scales, results), png, &error)) {
+            err << "paperfold: " << error << '\n';
+            return 2;
+        }
         err << QStringLiteral("%1: %2 of %3 runs failed -> %4\n")
                    .arg(QLatin1String(m.name), -18)
                    .arg(failures)
@@ -150,7 +159,13 @@ int runStability(const QStringList& arguments) {
                    .arg(png)
             << Qt::flush;
     }
-    QTextStream(stdout) << "wrote " << csv.fileName() << '\n';
+    out.flush();
+    QString error;
+    if (!writeOutputFile(csvPath, csv.toUtf8(), &error)) {
+        err << "paperfold: " << error << '\n';
+        return 2;
+    }
+    QTextStream(stdout) << "wrote " << csvPath << '\n';
     return 0;
 }
 

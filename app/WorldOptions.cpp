@@ -95,4 +95,9 @@ World worldFromOptions(const QCommandLineParser& parser) {
     return std::move(*world);
 }
 
+QStringList worldInputs(const QCommandLineParser& parser) {
+    if (!parser.isSet(QStringLiteral("load"))) return {};
+    return {parser.value(QStringLiteral("load"))};
+}
+
 } // namespace pf::cli

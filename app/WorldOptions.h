@@ -15,4 +15,8 @@ void addWorldOptions(QCommandLineParser& parser);
 // message for bad values or a bad file.
 World worldFromOptions(const QCommandLineParser& parser);
 
+// The files those options read (the --load sheet, if any): no output of the same
+// command may be one of them.
+QStringList worldInputs(const QCommandLineParser& parser);
+
 } // namespace pf::cli

@@ -1,6 +1,7 @@
 #include "SurfaceExport.h"
 
-#include <QSaveFile>
+#include "OutputFile.h"
+
 #include <QtEndian>
 #include <cstring>
 #include <sstream>
@@ -179,7 +180,7 @@ bool meshFormatForPath(const QString& path, MeshFormat* format) {
 }
 
 bool writeSurface(const SurfaceMesh& mesh, const QString& path, MeshFormat format, bool withNormals,
-                  QString* error) {
+                  QString* error, const QStringList& inputs) {
     QByteArray bytes;
     switch (format) {
     case MeshFormat::Obj:
@@ -193,12 +194,7 @@ bool writeSurface(const SurfaceMesh& mesh, const QString& path, MeshFormat forma
         if (bytes.isEmpty()) return false;
         break;
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        if (error) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return writeOutputFile(path, bytes, error, inputs);
 }
 
 } // namespace pf

@@ -1,17 +1,21 @@
 #include "SheetFile.h"
 
+#include "BoundedCbor.h"
 #include "Integrator.h"
+#include "OutputFile.h"
 #include "SheetValidation.h"
 
 #include <QCborArray>
 #include <QCborMap>
 #include <QCborValue>
 #include <QFile>
-#include <QSaveFile>
 #include <QtEndian>
 #include <bit>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <sys/stat.h>
+#include <system_error>
 
 namespace pf {
 
@@ -454,6 +458,80 @@ World worldFromCbor(const QCborMap& root) {
     return world;
 }
 
+// Every key the format uses, at any level: the loader builds nothing else.
+const CborBounds& sheetFileBounds() {
+    static const CborBounds bounds = [] {
+        CborBounds b;
+        for (const char* key : {"magic",
+                                "version",
+                                "scene",
+                                "seed",
+                                "rng",
+                                "time",
+                                "step",
+                                "params",
+                                "phi",
+                                "psi",
+                                "sigma",
+                                "dt",
+                                "iterations",
+                                "integrator",
+                                "stiffness",
+                                "damping",
+                                "gravity",
+                                "gravityOutsideFilter",
+                                "clampCompressed",
+                                "breaking",
+                                "hinges",
+                                "hingeThreshold",
+                                "breakReferenceStep",
+                                "groundFriction",
+                                "sphereFriction",
+                                "sphere",
+                                "center",
+                                "velocity",
+                                "radius",
+                                "active",
+                                "ground",
+                                "enabled",
+                                "height",
+                                "script",
+                                "sphereKeys",
+                                "pins",
+                                "vertices",
+                                "until",
+                                "sheet",
+                                "density",
+                                "vertexCount",
+                                "springCount",
+                                "triangleCount",
+                                "eventCount",
+                                "x",
+                                "v",
+                                "m",
+                                "X",
+                                "pinned",
+                                "springA",
+                                "springB",
+                                "rest",
+                                "kind",
+                                "breakable",
+                                "hinged",
+                                "faces",
+                                "springEvent",
+                                "triangleVertices",
+                                "triangleEdges",
+                                "events"})
+            b.knownKeys.insert(QString::fromLatin1(key));
+        // The deepest path is root → script → pins → group → value; at most 1000 pin
+        // groups of three entries make the most values a valid file holds.
+        b.maxDepth = 6;
+        b.maxValues = 20000;
+        return b;
+    }();
+    return bounds;
+}
+
 } // namespace
 
 QByteArray encodeWorld(const World& world) {
@@ -510,40 +588,38 @@ QByteArray encodeWorld(const World& world) {
 }
 
 WorldLoad decodeWorld(const QByteArray& bytes) {
-    QCborParserError parseError;
-    const QCborValue root = QCborValue::fromCbor(bytes, &parseError);
-    if (parseError.error != QCborError::NoError)
-        return {std::nullopt, QStringLiteral("not a valid CBOR file at byte %1: %2")
-                                  .arg(parseError.offset)
-                                  .arg(parseError.errorString())};
-    if (!root.isMap())
+    QString error;
+    const std::optional<QCborValue> root = parseBoundedCbor(bytes, sheetFileBounds(), &error);
+    if (!root) return {std::nullopt, error};
+    if (!root->isMap())
         return {std::nullopt, QStringLiteral("not a PaperFold sheet (no top-level map)")};
     try {
-        return {worldFromCbor(root.toMap()), {}};
+        return {worldFromCbor(root->toMap()), {}};
     } catch (const FormatError& e) {
         return {std::nullopt, e.message};
     }
 }
 
-bool saveWorld(const World& world, const QString& path, QString* error) {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        if (error) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    const QByteArray bytes = encodeWorld(world);
-    if (file.write(bytes) != bytes.size() || !file.commit()) {
-        if (error) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+bool saveWorld(const World& world, const QString& path, QString* error, const QStringList& inputs) {
+    return writeOutputFile(path, encodeWorld(world), error, inputs);
 }
 
 WorldLoad loadWorld(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         return {std::nullopt, QStringLiteral("cannot open %1: %2").arg(path, file.errorString())};
-    if (file.size() > kMaxSheetFileBytes)
+    // Checked on the open file, so nothing can swap it between the check and the read. A
+    // device such as /dev/zero has no size and would be read until memory runs out.
+    struct stat st {};
+    if (fstat(file.handle(), &st) != 0)
+        return {std::nullopt,
+                QStringLiteral("cannot open %1: %2")
+                    .arg(path, QString::fromStdString(
+                                   std::error_code(errno, std::generic_category()).message()))};
+    if (!S_ISREG(st.st_mode))
+        return {std::nullopt,
+                QStringLiteral("%1 is not a regular file (a device, FIFO or folder)").arg(path)};
+    if (st.st_size > kMaxSheetFileBytes)
         return {std::nullopt,
                 QStringLiteral("%1 is larger than %2 MiB").arg(path).arg(kMaxSheetFileBytes >> 20)};
     WorldLoad load = decodeWorld(file.read(kMaxSheetFileBytes + 1));

@@ -4,6 +4,7 @@
 
 #include <QByteArray>
 #include <QString>
+#include <QStringList>
 #include <optional>
 
 namespace pf {
@@ -31,8 +32,12 @@ struct WorldLoad {
 // Decodes and validates everything; never trusts a count or an index it was given.
 WorldLoad decodeWorld(const QByteArray& bytes);
 
-// Atomic: a crash or a full disk leaves the previous file intact (QSaveFile).
-bool saveWorld(const World& world, const QString& path, QString* error);
+// Through the checked output path (OutputFile.h): atomic, refuses devices and any of
+// `inputs`, reports the OS's reason. A crash or a full disk leaves the previous file intact.
+bool saveWorld(const World& world, const QString& path, QString* error,
+               const QStringList& inputs = {});
+// Refuses anything but a regular file before reading it; memory stays within a small
+// multiple of the file's size, whatever keys it holds.
 WorldLoad loadWorld(const QString& path);
 
 } // namespace pf

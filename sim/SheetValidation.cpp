@@ -16,6 +16,14 @@ bool finite(const Vec3& p) {
     return p.allFinite();
 }
 
+// A sheet is a few metres across and stays near its desk; a point farther out than this
+// is a corrupt file, and a renderer working in single precision could not frame it.
+constexpr double kMaxCoordinate = 1e4;
+
+bool withinReach(const Vec3& p) {
+    return p.cwiseAbs().maxCoeff() <= kMaxCoordinate;
+}
+
 } // namespace
 
 std::string validateSheet(const Sheet& sheet) {
@@ -41,6 +49,8 @@ std::string validateSheet(const Sheet& sheet) {
     for (Index i = 0; i < nvi; ++i) {
         if (!finite(V.x[i]) || !finite(V.v[i]) || !V.X[i].allFinite())
             return "vertex " + str(i) + " has a non-finite coordinate";
+        if (!withinReach(V.x[i]) || V.X[i].cwiseAbs().maxCoeff() > kMaxCoordinate)
+            return "vertex " + str(i) + " lies more than 10 km from the origin";
         if (!(std::isfinite(V.m[i]) && V.m[i] > 0.0))
             return "vertex " + str(i) + " has a non-positive mass";
         if (V.pinned[i] > 1) return "vertex " + str(i) + " has an invalid pinned flag";

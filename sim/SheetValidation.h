@@ -7,9 +7,9 @@
 namespace pf {
 
 // Checks that a sheet is a consistent triangle mesh with springs: array sizes agree,
-// every index is in range, numbers are finite, triangles are non-degenerate in
-// material space, every triangle edge is a structural spring that lists the triangle
-// as a face and vice versa, every vertex belongs to a triangle, and active log events
+// every index is in range, numbers are finite and coordinates within 10 km, triangles are
+// non-degenerate in material space, every triangle edge is a structural spring that lists the
+// triangle as a face and vice versa, every vertex belongs to a triangle, and active log events
 // point at real elements. Returns an empty string if valid, else the first problem.
 std::string validateSheet(const Sheet& sheet);
 

@@ -2,6 +2,7 @@
 
 #include "OffscreenRenderer.h"
 #include "ParameterPanel.h"
+#include "PngFile.h"
 #include "Scenes.h"
 #include "SheetBuilder.h"
 #include "SheetFile.h"
@@ -741,7 +742,7 @@ void MainWindow::exportImage() {
     }
     OrbitCamera camera = viewport_->camera();
     const QImage image = renderer->render(*snap, camera, viewport_->renderOptions());
-    if (!image.save(path, "PNG")) showError(tr("Could not write %1").arg(path));
+    if (!writePng(image, path, &error)) showError(tr("Could not export the image: %1").arg(error));
 }
 
 void MainWindow::exportMesh() {
