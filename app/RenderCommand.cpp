@@ -5,6 +5,7 @@
 #include "OffscreenRenderer.h"
 #include "OutputPattern.h"
 #include "PngFile.h"
+#include "ReferenceImage.h"
 #include "SheetSnapshot.h"
 #include "Simulation.h"
 #include "WorldOptions.h"
@@ -153,8 +154,13 @@ int runRender(const QStringList& arguments) {
     const QString diffPath = QFileInfo(pattern->path(0)).path() + QLatin1Char('/') +
                              QFileInfo(pattern->path(0)).completeBaseName() +
                              QStringLiteral(".diff.png");
-    if (parser.isSet(QStringLiteral("reference")))
+    QImage reference;
+    if (parser.isSet(QStringLiteral("reference"))) {
         requireWritable(QStringLiteral("output"), diffPath, inputs + QStringList{output});
+        QString error;
+        reference = readReferenceImage(refPath, &error);
+        if (reference.isNull()) throw UsageError{error};
+    }
 
     Simulation sim(worldFromOptions(parser));
     QTextStream out(stdout), err(stderr);
@@ -204,11 +210,6 @@ int runRender(const QStringList& arguments) {
         else if (sequence && (f + 1) % std::max(1, count / 10) == 0)
             err << QStringLiteral("frame %1/%2\n").arg(f + 1).arg(count);
         if (!sequence && parser.isSet(QStringLiteral("reference"))) {
-            const QImage reference(refPath);
-            if (reference.isNull()) {
-                err << "paperfold: cannot read the reference image " << refPath << '\n';
-                return 2;
-            }
             const ImageDifference d = compareImages(reference, image);
             out << QStringLiteral("compared with %1: %2 % of pixels differ (threshold %3 %)\n")
                        .arg(refPath)

@@ -33,9 +33,7 @@ class BoundedReader {
     }
 
   private:
-    bool failed() {
-        return !problem_.isEmpty() || reader_.lastError() != QCborError::NoError;
-    }
+    bool failed() { return !problem_.isEmpty() || reader_.lastError() != QCborError::NoError; }
     QCborValue fail(const QString& message) {
         if (problem_.isEmpty()) problem_ = message;
         return {};

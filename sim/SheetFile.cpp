@@ -605,6 +605,11 @@ bool saveWorld(const World& world, const QString& path, QString* error, const QS
 }
 
 WorldLoad loadWorld(const QString& path) {
+    // Opening a FIFO would wait for a writer forever: look before opening.
+    struct stat before {};
+    if (stat(QFile::encodeName(path).constData(), &before) == 0 && !S_ISREG(before.st_mode))
+        return {std::nullopt,
+                QStringLiteral("%1 is not a regular file (a device, FIFO or folder)").arg(path)};
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         return {std::nullopt, QStringLiteral("cannot open %1: %2").arg(path, file.errorString())};
