@@ -2,6 +2,7 @@
 // (under xvfb-run), checked against what the simulation thread reports.
 #include "MainWindow.h"
 #include "ParameterPanel.h"
+#include "QueuedSignalSpy.h"
 #include "SheetFile.h"
 #include "SheetStats.h"
 #include "SimulationThread.h"
@@ -16,7 +17,6 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QPushButton>
-#include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
 #include <QTemporaryDir>
@@ -27,9 +27,9 @@ using namespace pf;
 
 namespace {
 
-// The simulation thread may emit before the test starts waiting (QSignalSpy records
-// directly), so wait for a count rather than for the next emission.
-bool waitForCount(QSignalSpy& spy, int count, int ms = 5000) {
+// The simulation thread may emit before the test starts waiting (the spy's queued
+// delivery may already be pending), so wait for a count rather than for the next emission.
+bool waitForCount(QueuedSignalSpy& spy, int count, int ms = 5000) {
     QElapsedTimer t;
     t.start();
     while (spy.count() < count && t.elapsed() < ms) QTest::qWait(5);
@@ -38,7 +38,7 @@ bool waitForCount(QSignalSpy& spy, int count, int ms = 5000) {
 
 // A copy of the simulation's whole state, as the window's Save would take it.
 std::shared_ptr<const World> worldOf(MainWindow& w) {
-    QSignalSpy spy(w.simulation(), &SimulationThread::worldCopied);
+    QueuedSignalSpy spy(w.simulation(), &SimulationThread::worldCopied);
     w.simulation()->requestWorld(987654);
     if (!waitForCount(spy, 1)) return nullptr;
     return spy.takeFirst().at(1).value<std::shared_ptr<const World>>();
@@ -47,7 +47,7 @@ std::shared_ptr<const World> worldOf(MainWindow& w) {
 // Waits for a snapshot published after everything queued so far was applied.
 SimulationStatus settledStatus(MainWindow& w) {
     w.simulation()->sync();
-    QSignalSpy spy(w.simulation(), &SimulationThread::snapshotReady);
+    QueuedSignalSpy spy(w.simulation(), &SimulationThread::snapshotReady);
     w.simulation()->setPlaying(false); // publishes
     waitForCount(spy, 1);
     return w.simulation()->status();
@@ -95,7 +95,7 @@ class TestEditor : public QObject {
     void cleanup() { window.reset(); }
 
     void slidersChangeTheParametersTheSimulationUses() {
-        QSignalSpy applied(window->simulation(), &SimulationThread::paramsApplied);
+        QueuedSignalSpy applied(window->simulation(), &SimulationThread::paramsApplied);
         window->panel()->phiSlider()->setValue(80);
         QVERIFY(waitForCount(applied, 1));
         QCOMPARE(applied.last().at(0).value<SimParams>().phi, 0.80);
@@ -146,7 +146,7 @@ class TestEditor : public QObject {
     void pushStrokeBreaksAndUndoRedoRestoreTheCount() {
         Viewport* view = window->viewport();
         const SimulationStatus before = settledStatus(*window);
-        QSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
         // One stroke: press in the middle of the sheet, step the (paused) simulation
         // while dragging across, release.
         QPoint p = viewportCentre(*window) + QPoint(-60, 0);
@@ -167,12 +167,12 @@ class TestEditor : public QObject {
         QCOMPARE(window->undoStack()->count(), 1);
         QVERIFY(window->isModified());
 
-        QSignalSpy undone(window->simulation(), &SimulationThread::strokeUndone);
+        QueuedSignalSpy undone(window->simulation(), &SimulationThread::strokeUndone);
         window->action("undo")->trigger();
         QVERIFY(waitForCount(undone, 1));
         QCOMPARE(settledStatus(*window).breaks, before.breaks);
 
-        QSignalSpy redone(window->simulation(), &SimulationThread::strokeRedone);
+        QueuedSignalSpy redone(window->simulation(), &SimulationThread::strokeRedone);
         window->action("redo")->trigger();
         QVERIFY(waitForCount(redone, 1));
         QCOMPARE(settledStatus(*window).breaks, after.breaks);
@@ -277,7 +277,7 @@ class TestEditor : public QObject {
 
     void solverDockChoosesTheIntegratorAndShowsLiveStrain() {
         SolverPanel* solver = window->solverPanel();
-        QSignalSpy applied(window->simulation(), &SimulationThread::paramsApplied);
+        QueuedSignalSpy applied(window->simulation(), &SimulationThread::paramsApplied);
         solver->integratorBox()->setCurrentText(QStringLiteral("jacobi-scalar"));
         QVERIFY(waitForCount(applied, 1));
         QCOMPARE(applied.last().at(0).value<SimParams>().integrator, std::string("jacobi-scalar"));

@@ -24,19 +24,19 @@ SimulationThread::~SimulationThread() {
 }
 
 std::shared_ptr<const SheetSnapshot> SimulationThread::latestSnapshot() const {
-    QMutexLocker lock(&mutex_);
+    std::lock_guard lock(mutex_);
     return snapshot_;
 }
 
 SimulationStatus SimulationThread::status() const {
-    QMutexLocker lock(&mutex_);
+    std::lock_guard lock(mutex_);
     return status_;
 }
 
 void SimulationThread::publish(std::shared_ptr<const SheetSnapshot> snapshot,
                                const SimulationStatus& status) {
     {
-        QMutexLocker lock(&mutex_);
+        std::lock_guard lock(mutex_);
         snapshot_ = std::move(snapshot);
         status_ = status;
     }

@@ -3,11 +3,11 @@
 #include "SheetSnapshot.h"
 #include "World.h"
 
-#include <QMutex>
 #include <QObject>
 #include <QThread>
 #include <atomic>
 #include <memory>
+#include <mutex>
 
 namespace pf {
 
@@ -68,7 +68,9 @@ class SimulationThread : public QObject {
 
     QThread thread_;
     SimulationWorker* worker_ = nullptr; // lives on thread_
-    mutable QMutex mutex_;
+    // A standard mutex, not QMutex: ThreadSanitizer sees its every lock (QMutex's
+    // contended path runs inside uninstrumented Qt), so the race check stays exact.
+    mutable std::mutex mutex_;
     std::shared_ptr<const SheetSnapshot> snapshot_;
     SimulationStatus status_;
     std::atomic<bool> notifyPending_{false};

@@ -1,21 +1,50 @@
-// Writes seed inputs for the fuzzer: valid sheets of each scene, small and crumpled.
+// Writes seed inputs for the fuzzers into three folders: valid sheets of each scene
+// (small and crumpled), reference PNGs of a few sizes and formats, and output names.
 #include "Scenes.h"
 #include "SheetFile.h"
 #include "Simulation.h"
 
+#include <QDir>
 #include <QFile>
+#include <QImage>
+
+namespace {
+
+bool writeFile(const QString& path, const QByteArray& bytes) {
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     if (argc != 2) return 2;
+    const QDir root(QString::fromLocal8Bit(argv[1]));
+    for (const char* sub : {"sheets", "images", "patterns"})
+        if (!root.mkpath(QLatin1String(sub))) return 1;
     int n = 0;
     for (const auto& name : pf::sceneNames()) {
         pf::SceneOptions o;
         o.resolution = 4;
         pf::Simulation sim(*pf::makeScene(name, o));
         for (int k = 0; k < 120; ++k) sim.step();
-        QFile f(QString::fromLocal8Bit(argv[1]) + QStringLiteral("/seed%1.paper").arg(n++));
-        if (!f.open(QIODevice::WriteOnly)) return 1;
-        f.write(pf::encodeWorld(sim.world()));
+        if (!writeFile(root.filePath(QStringLiteral("sheets/seed%1.paper").arg(n++)),
+                       pf::encodeWorld(sim.world())))
+            return 1;
     }
+    n = 0;
+    for (const QImage::Format format : {QImage::Format_RGB32, QImage::Format_ARGB32,
+                                        QImage::Format_Grayscale8, QImage::Format_Indexed8}) {
+        QImage image(8 + 3 * n, 6 + n, QImage::Format_ARGB32);
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                image.setPixel(x, y, qRgba(x * 30, y * 40, (x + y) * 10, 200 + x));
+        image = image.convertToFormat(format);
+        if (!image.save(root.filePath(QStringLiteral("images/seed%1.png").arg(n++)), "PNG"))
+            return 1;
+    }
+    n = 0;
+    for (const char* text : {"frame_%04d.png", "shot.png", "a%d", "%01d_%", "x_%n.png"})
+        if (!writeFile(root.filePath(QStringLiteral("patterns/seed%1").arg(n++)), text)) return 1;
     return 0;
 }
