@@ -27,6 +27,15 @@ void pushLine(std::vector<float>& out, const Vec3& a, const Vec3& b, const float
     }
 }
 
+// Empties `v` for a refill of `size` elements. The capacity is kept for the next frame
+// unless it is more than twice what is needed: a sheet that was crumpled and then
+// replaced by a fresh one must not keep the crumpled surface's buffers.
+template <typename T> void clearFor(std::vector<T>& v, std::size_t size) {
+    if (v.capacity() > 2 * size) std::vector<T>().swap(v);
+    v.clear();
+    v.reserve(size);
+}
+
 } // namespace
 
 GLuint SheetRenderer::program(const char* vert, const char* geom, const char* frag,
@@ -198,8 +207,7 @@ void SheetRenderer::uploadSurface(const SheetSnapshot& snap, const RenderOptions
     surfaceKey_ = key;
     const SurfaceMesh mesh = subdivide(snap.x, snap.tris, strain ? &snap.vertexStrain : nullptr,
                                        snap.sigma, options.subdivision);
-    vertexData_.clear();
-    vertexData_.reserve(mesh.positions.size() * kSurfaceFloats);
+    clearFor(vertexData_, mesh.positions.size() * kSurfaceFloats);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         Vec3 p = mesh.positions[i];
         // A Hermite midpoint can dip below paper lying on the desk; paper cannot.
@@ -214,8 +222,7 @@ void SheetRenderer::uploadSurface(const SheetSnapshot& snap, const RenderOptions
             vertexData_.insert(vertexData_.end(), {0.0f, 0.0f, 0.0f, 0.0f});
         }
     }
-    indexData_.clear();
-    indexData_.reserve(mesh.triangles.size() * 3);
+    clearFor(indexData_, mesh.triangles.size() * 3);
     for (const auto& t : mesh.triangles) indexData_.insert(indexData_.end(), t.begin(), t.end());
     surfaceIndexCount_ = static_cast<GLsizei>(indexData_.size());
     const GlFunctions& gl = *gl_;
@@ -288,6 +295,8 @@ void SheetRenderer::buildLines(const SheetSnapshot& snap, const RenderOptions& o
                 if (snap.recentlyBroken[s])
                     pushLine(lineData_, x[snap.springEnds[s][0]], x[snap.springEnds[s][1]], c);
         });
+    // As in clearFor: no keeping the lines of a much larger (or more overlaid) sheet.
+    if (lineData_.capacity() > 2 * lineData_.size()) lineData_.shrink_to_fit();
 }
 
 void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,

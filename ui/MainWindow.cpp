@@ -41,6 +41,10 @@
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 namespace pf {
 
 namespace {
@@ -116,6 +120,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     panel_->setToolRadius(toolRadius_);
 
     connect(sim_.get(), &SimulationThread::snapshotReady, this, &MainWindow::onSnapshot);
+    // After New/Open the crumpled sheet, its snapshots and the renderer's buffers for it
+    // are freed, but glibc keeps the freed pages in its arenas (the simulation thread's
+    // and the GUI's): give them back once the new sheet's first frame is drawn.
+    connect(sim_.get(), &SimulationThread::worldReplaced, this, [this] { releasePending_ = true; });
+    connect(viewport_, &Viewport::frameDrawn, this, [this] {
+        if (!releasePending_) return;
+        releasePending_ = false;
+#if defined(__GLIBC__)
+        malloc_trim(0);
+#endif
+    });
     connect(sim_.get(), &SimulationThread::strokeRecorded, this, [this](int stroke, int events) {
         undo_->push(new PushStrokeCommand(sim_.get(), stroke, events));
     });

@@ -119,6 +119,9 @@ class MainWindow : public QMainWindow {
     std::int64_t savedStep_ = 0;
     std::int64_t lastStep_ = 0;
     bool firstSnapshot_ = true;
+    // Set when the simulation replaced its World (New, Open, Reset): the next frame
+    // drawn hands the freed heap back to the system.
+    bool releasePending_ = false;
     bool playing_ = true;
     double toolRadius_ = 0.03;
     Vec3 toolTarget_ = Vec3::Zero();

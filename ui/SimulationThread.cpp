@@ -2,7 +2,8 @@
 
 #include "SimulationWorker.h"
 
-#include <QMetaObject>
+#include <condition_variable>
+#include <mutex>
 
 namespace pf {
 
@@ -12,15 +13,30 @@ SimulationThread::SimulationThread(World initial, QObject* parent) : QObject(par
     worker_ = new SimulationWorker(std::move(initial), this);
     worker_->moveToThread(&thread_);
     connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
+    connect(this, &SimulationThread::commandsPosted, worker_, &SimulationWorker::runCommands,
+            Qt::QueuedConnection);
+    connect(this, &SimulationThread::guiWorkPosted, this, &SimulationThread::deliverToGui,
+            Qt::QueuedConnection);
+    connect(this, &SimulationThread::snapshotPosted, this, &SimulationThread::notifySnapshot,
+            Qt::QueuedConnection);
     thread_.setObjectName(QStringLiteral("simulation"));
     thread_.start();
-    QMetaObject::invokeMethod(
-        worker_, [w = worker_] { w->start(); }, Qt::QueuedConnection);
+    post([](SimulationWorker& w) { w.start(); });
 }
 
 SimulationThread::~SimulationThread() {
     thread_.quit();
     thread_.wait();
+    // QThread::wait synchronises inside Qt, where ThreadSanitizer cannot see it; the
+    // worker's destructor signals through this lock, which it can.
+    std::unique_lock lock(workerGoneMutex_);
+    workerGoneChanged_.wait(lock, [this] { return workerGone_; });
+}
+
+void SimulationThread::markWorkerGone() {
+    std::lock_guard lock(workerGoneMutex_);
+    workerGone_ = true;
+    workerGoneChanged_.notify_all();
 }
 
 std::shared_ptr<const SheetSnapshot> SimulationThread::latestSnapshot() const {
@@ -42,19 +58,27 @@ void SimulationThread::publish(std::shared_ptr<const SheetSnapshot> snapshot,
     }
     // One notification in flight at a time: a slow GUI skips frames instead of
     // piling up a queue of stale ones.
-    if (!notifyPending_.exchange(true))
-        QMetaObject::invokeMethod(
-            this,
-            [this] {
-                notifyPending_ = false;
-                emit snapshotReady();
-            },
-            Qt::QueuedConnection);
+    if (!notifyPending_.exchange(true)) emit snapshotPosted(QPrivateSignal());
 }
 
-#define PF_POST(call)                                                                              \
-    QMetaObject::invokeMethod(                                                                     \
-        worker_, [=, w = worker_] { w->call; }, Qt::QueuedConnection)
+void SimulationThread::notifySnapshot() {
+    notifyPending_ = false;
+    emit snapshotReady();
+}
+
+void SimulationThread::emitOnGuiThread(std::function<void()> emitSignal) {
+    if (toGui_.post(std::move(emitSignal))) emit guiWorkPosted(QPrivateSignal());
+}
+
+void SimulationThread::deliverToGui() {
+    for (const auto& emitSignal : toGui_.takeAll()) emitSignal();
+}
+
+void SimulationThread::post(std::function<void(SimulationWorker&)> command) {
+    if (toWorker_.post(std::move(command))) emit commandsPosted(QPrivateSignal());
+}
+
+#define PF_POST(call) post([=](SimulationWorker& w) { w.call; })
 
 void SimulationThread::setPlaying(bool playing) {
     PF_POST(setPlaying(playing));
@@ -84,8 +108,18 @@ void SimulationThread::requestWorld(quint64 requestId) {
 #undef PF_POST
 
 void SimulationThread::sync() {
-    QMetaObject::invokeMethod(
-        worker_, [] {}, Qt::BlockingQueuedConnection);
+    // A condition variable rather than a blocking queued call: its wait is one that
+    // ThreadSanitizer sees, so what the worker did is ordered before what follows here.
+    std::mutex m;
+    std::condition_variable applied;
+    bool done = false;
+    post([&](SimulationWorker&) {
+        std::lock_guard lock(m);
+        done = true;
+        applied.notify_one();
+    });
+    std::unique_lock lock(m);
+    applied.wait(lock, [&] { return done; });
 }
 
 } // namespace pf

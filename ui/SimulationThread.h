@@ -1,11 +1,13 @@
 #pragma once
 
+#include "CrossThreadQueue.h"
 #include "SheetSnapshot.h"
 #include "World.h"
 
 #include <QObject>
 #include <QThread>
 #include <atomic>
+#include <condition_variable>
 #include <memory>
 #include <mutex>
 
@@ -59,12 +61,38 @@ class SimulationThread : public QObject {
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
     void worldCopied(quint64 requestId, std::shared_ptr<const World> world);
+    // A replaceWorld was applied: the old World is gone and a snapshot of the new one
+    // was published (its snapshotReady comes first).
+    void worldReplaced();
     void paramsApplied(const pf::SimParams& params);
     void diverged(qint64 step);
+
+    // Internal wake-ups, connected queued at construction. They carry nothing and name
+    // no object, so no data and no object crosses threads through Qt's (to
+    // ThreadSanitizer invisible) event queue: the data goes through CrossThreadQueue.
+    void commandsPosted(QPrivateSignal);
+    void guiWorkPosted(QPrivateSignal);
+    void snapshotPosted(QPrivateSignal);
+
+  private slots:
+    // Woken by the simulation thread; they run on the GUI thread.
+    void notifySnapshot();
+    void deliverToGui();
 
   private:
     friend class SimulationWorker;
     void publish(std::shared_ptr<const SheetSnapshot> snapshot, const SimulationStatus& status);
+    // Called on the simulation thread: `emitSignal` runs (and emits) on the GUI thread.
+    void emitOnGuiThread(std::function<void()> emitSignal);
+    void post(std::function<void(SimulationWorker&)> command);
+    // Called last by the worker's destructor, on the simulation thread.
+    void markWorkerGone();
+
+    CrossThreadQueue<SimulationWorker&> toWorker_;
+    CrossThreadQueue<> toGui_;
+    std::mutex workerGoneMutex_;
+    std::condition_variable workerGoneChanged_;
+    bool workerGone_ = false;
 
     QThread thread_;
     SimulationWorker* worker_ = nullptr; // lives on thread_

@@ -27,6 +27,17 @@ SimulationWorker::SimulationWorker(World world, SimulationThread* owner)
     connect(&timer_, &QTimer::timeout, this, &SimulationWorker::frame);
 }
 
+SimulationWorker::~SimulationWorker() {
+    // Drop the connections from the owner here, not in ~QObject: after markWorkerGone
+    // the owner may be destroyed, and ~QObject would read it to disconnect.
+    disconnect(owner_, nullptr, this, nullptr);
+    owner_->markWorkerGone();
+}
+
+void SimulationWorker::runCommands() {
+    for (const auto& command : owner_->toWorker_.takeAll()) command(*this);
+}
+
 void SimulationWorker::start() {
     timer_.start(static_cast<int>(std::lround(kFrameSeconds * 1000)));
     publish(0.0);
@@ -47,7 +58,7 @@ void SimulationWorker::stepOnce() {
 
 void SimulationWorker::setParams(const SimParams& params) {
     sim_.world().params = params;
-    emit owner_->paramsApplied(params);
+    owner_->emitOnGuiThread([o = owner_, params] { emit o->paramsApplied(params); });
     publish(0.0);
 }
 
@@ -62,6 +73,7 @@ void SimulationWorker::replaceWorld(const World& world) {
     pressed_ = wasPressed;
     strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
     publish(0.0);
+    owner_->emitOnGuiThread([o = owner_] { emit o->worldReplaced(); });
 }
 
 void SimulationWorker::setTool(const Vec3& target, double radius, bool visible, bool pressed) {
@@ -88,8 +100,9 @@ void SimulationWorker::endStroke() {
     }
     if (events.empty()) return;
     strokes_.push_back(std::move(events));
-    emit owner_->strokeRecorded(static_cast<int>(strokes_.size()) - 1,
-                                static_cast<int>(strokes_.back().size()));
+    const int stroke = static_cast<int>(strokes_.size()) - 1;
+    const int count = static_cast<int>(strokes_.back().size());
+    owner_->emitOnGuiThread([o = owner_, stroke, count] { emit o->strokeRecorded(stroke, count); });
 }
 
 void SimulationWorker::undoStroke(int stroke) {
@@ -98,7 +111,8 @@ void SimulationWorker::undoStroke(int stroke) {
     auto& events = strokes_[static_cast<std::size_t>(stroke)];
     for (auto it = events.rbegin(); it != events.rend(); ++it)
         recovered += recoverEvent(sim_.world().sheet, it->event) ? 1 : 0;
-    emit owner_->strokeUndone(stroke, recovered);
+    owner_->emitOnGuiThread(
+        [o = owner_, stroke, recovered] { emit o->strokeUndone(stroke, recovered); });
     publish(0.0);
 }
 
@@ -137,12 +151,16 @@ void SimulationWorker::redoStroke(int stroke) {
         }
         ++reapplied;
     }
-    emit owner_->strokeRedone(stroke, reapplied);
+    owner_->emitOnGuiThread(
+        [o = owner_, stroke, reapplied] { emit o->strokeRedone(stroke, reapplied); });
     publish(0.0);
 }
 
 void SimulationWorker::copyWorld(quint64 requestId) {
-    emit owner_->worldCopied(requestId, std::make_shared<const World>(sim_.world()));
+    owner_->emitOnGuiThread(
+        [o = owner_, requestId, world = std::make_shared<const World>(sim_.world())] {
+            emit o->worldCopied(requestId, world);
+        });
 }
 
 void SimulationWorker::advance(int steps) {
@@ -156,7 +174,7 @@ void SimulationWorker::advance(int steps) {
         sphere.velocity = move / w.params.dt;
         if (sim_.step() != StepStatus::Ok) {
             playing_ = false;
-            emit owner_->diverged(w.stepCount);
+            owner_->emitOnGuiThread([o = owner_, step = w.stepCount] { emit o->diverged(step); });
             return;
         }
     }

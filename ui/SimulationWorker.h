@@ -17,6 +17,7 @@ class SimulationWorker : public QObject {
 
   public:
     SimulationWorker(World world, SimulationThread* owner);
+    ~SimulationWorker() override;
 
     static constexpr double kFrameSeconds = 1.0 / 60.0;
 
@@ -29,6 +30,9 @@ class SimulationWorker : public QObject {
     void undoStroke(int stroke);
     void redoStroke(int stroke);
     void copyWorld(quint64 requestId);
+
+    // Applies every command the GUI queued (SimulationThread::post).
+    void runCommands();
 
   private:
     // What a stroke did, enough to undo it and do it again.

@@ -1,0 +1,163 @@
+// Editor memory benchmark (not a ctest: it runs for minutes). Drives a real
+// MainWindow like test_editor does: ROUNDS times (default 5) it crumples the `press`
+// sheet with push strokes of the mouse while the simulation plays for CRUMPLE_SECONDS
+// (default 25) of wall time, then triggers File ▸ New ▸ press and prints the process
+// RSS (VmRSS) and glibc's in-use heap once the fresh sheet is shown.
+//   xvfb-run -a -s "-screen 0 1280x1024x24" build/tests/editor_memory_rounds
+// Environment: ROUNDS, CRUMPLE_SECONDS; PF_TRIM=1 also calls malloc_trim(0) after each
+// New and prints the RSS after it (diagnosis: fragmentation vs memory still in use);
+// PF_EXIT_AFTER_NEW=1 ends the process right after the last round without cleaning up,
+// so that heaptrack reports what is still allocated after New as leaked;
+// PF_SUBDIVISION=n draws the surface at subdivision level n instead of the default.
+// Exit status 1 if an RSS after New exceeds the fresh start by more than 20 %.
+#include "MainWindow.h"
+#include "QueuedSignalSpy.h"
+#include "SimulationThread.h"
+#include "Viewport.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QMouseEvent>
+#include <QRandomGenerator>
+#include <QtTest>
+#include <cstdio>
+#include <cstdlib>
+#include <malloc.h>
+
+using namespace pf;
+
+namespace {
+
+double rssMb() {
+    QFile f(QStringLiteral("/proc/self/status"));
+    if (!f.open(QIODevice::ReadOnly)) return -1;
+    for (const QByteArray& line : f.readAll().split('\n'))
+        if (line.startsWith("VmRSS:"))
+            return line.mid(6).trimmed().split(' ').first().toDouble() / 1024.0;
+    return -1;
+}
+
+double heapInUseMb() {
+    const struct mallinfo2 mi = mallinfo2();
+    return double(mi.uordblks + mi.hblkhd) / (1024.0 * 1024.0);
+}
+
+double heapHeldMb() { // sbrk/mmap'ed arena space plus mmapped chunks
+    const struct mallinfo2 mi = mallinfo2();
+    return double(mi.arena + mi.hblkhd) / (1024.0 * 1024.0);
+}
+
+int envInt(const char* name, int fallback) {
+    const char* v = std::getenv(name);
+    return v && *v ? std::atoi(v) : fallback;
+}
+
+void sendMouse(QWidget* view, QEvent::Type type, const QPoint& p, Qt::MouseButton button,
+               Qt::MouseButtons buttons) {
+    QMouseEvent e(type, p, view->mapToGlobal(p), button, buttons, Qt::NoModifier);
+    QApplication::sendEvent(view, &e);
+}
+
+// Lets the GUI paint for `ms` and waits for a snapshot published after everything
+// queued so far, so the status and the viewport show the current sheet.
+SimulationStatus settle(MainWindow& w, int ms) {
+    QTest::qWait(ms);
+    w.simulation()->sync();
+    QueuedSignalSpy spy(w.simulation(), &SimulationThread::snapshotReady);
+    w.simulation()->setPlaying(true); // publishes
+    QElapsedTimer t;
+    t.start();
+    while (spy.count() < 1 && t.elapsed() < 5000) QTest::qWait(5);
+    QTest::qWait(200); // a few repaints with it
+    return w.simulation()->status();
+}
+
+// Push strokes across the sheet while the simulation plays, for `seconds` of wall time.
+void crumple(MainWindow& w, double seconds, QRandomGenerator& rng) {
+    Viewport* view = w.viewport();
+    const QPoint centre = view->rect().center();
+    QElapsedTimer t;
+    t.start();
+    while (t.elapsed() < seconds * 1000) {
+        QPoint p = centre + QPoint(rng.bounded(-150, 151), rng.bounded(-100, 101));
+        const QPoint step(rng.bounded(-6, 7), rng.bounded(-6, 7));
+        sendMouse(view, QEvent::MouseMove, p, Qt::NoButton, Qt::NoButton);
+        QTest::qWait(30);
+        sendMouse(view, QEvent::MouseButtonPress, p, Qt::LeftButton, Qt::LeftButton);
+        for (int k = 0; k < 40 && t.elapsed() < seconds * 1000; ++k) {
+            p += step;
+            sendMouse(view, QEvent::MouseMove, p, Qt::NoButton, Qt::LeftButton);
+            QTest::qWait(20);
+        }
+        sendMouse(view, QEvent::MouseButtonRelease, p, Qt::LeftButton, Qt::NoButton);
+        QTest::qWait(20);
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("PaperFoldMemoryBench"));
+    const int rounds = envInt("ROUNDS", 5);
+    const int seconds = envInt("CRUMPLE_SECONDS", 25);
+    const bool trim = envInt("PF_TRIM", 0) != 0;
+    QRandomGenerator rng(12345);
+
+    MainWindow window;
+    window.resize(1000, 700);
+    window.showError = [](const QString& m) { std::fprintf(stderr, "error: %s\n", qPrintable(m)); };
+    window.askToSave = [] { return QMessageBox::Discard; };
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window)) return 2;
+    QElapsedTimer t;
+    t.start();
+    while (!window.viewport()->snapshot() && t.elapsed() < 10000) QTest::qWait(10);
+    if (!window.viewport()->glError().isEmpty())
+        std::fprintf(stderr, "GL: %s\n", qPrintable(window.viewport()->glError()));
+
+    if (const char* level = std::getenv("PF_SUBDIVISION")) { // diagnosis: surface size
+        RenderOptions o = window.viewport()->renderOptions();
+        o.subdivision = std::atoi(level);
+        window.viewport()->setRenderOptions(o);
+    }
+    const SimulationStatus fresh = settle(window, 1000);
+    const double freshRss = rssMb();
+    std::printf("fresh: %d vertices  RSS %.1f MB  heap in use %.1f MB  heap held %.1f MB\n",
+                fresh.vertices, freshRss, heapInUseMb(), heapHeldMb());
+    std::fflush(stdout);
+
+    double worst = freshRss;
+    for (int r = 1; r <= rounds; ++r) {
+        crumple(window, seconds, rng);
+        const SimulationStatus crumpled = settle(window, 100);
+        const double crumpledRss = rssMb();
+        window.action("new.press")->trigger();
+        const SimulationStatus renewed = settle(window, 1000);
+        const double rss = rssMb();
+        worst = std::max(worst, rss);
+        std::printf(
+            "round %d: crumpled %d vertices (%d breaks, step %lld) RSS %.1f MB | after New: %d "
+            "vertices  RSS %.1f MB (%+.0f %% of fresh)  heap in use %.1f MB  heap held "
+            "%.1f MB",
+            r, crumpled.vertices, crumpled.breaks, static_cast<long long>(crumpled.step),
+            crumpledRss, renewed.vertices, rss, 100.0 * (rss / freshRss - 1.0), heapInUseMb(),
+            heapHeldMb());
+        if (trim) {
+            malloc_trim(0);
+            std::printf("  | after malloc_trim: RSS %.1f MB", rssMb());
+        }
+        std::printf("\n");
+        std::fflush(stdout);
+    }
+    if (envInt("PF_EXIT_AFTER_NEW", 0)) {
+        // For heaptrack: what is still allocated now is reported as leaked.
+        std::fflush(stdout);
+        std::_Exit(0);
+    }
+    std::printf("worst RSS after New: %.1f MB = %+.0f %% of fresh (bar: +20 %%)\n", worst,
+                100.0 * (worst / freshRss - 1.0));
+    window.close();
+    return worst <= 1.2 * freshRss ? 0 : 1;
+}
