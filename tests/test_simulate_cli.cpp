@@ -26,7 +26,8 @@ Result runPaperfold(const QStringList& args, bool noDisplay = false) {
         p.setProcessEnvironment(env);
     }
     p.start(QStringLiteral(PAPERFOLD_EXE), args);
-    if (!p.waitForFinished(120000)) return {-1, {}, "timeout"};
+    // Sanitizer builds run the commands many times slower; the limit scales with it.
+    if (!p.waitForFinished(120000 * PAPERFOLD_TEST_SLOWDOWN)) return {-1, {}, "timeout"};
     return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2, p.readAllStandardOutput(),
             p.readAllStandardError()};
 }
