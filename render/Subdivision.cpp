@@ -76,4 +76,10 @@ SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& t
     return mesh;
 }
 
+int subdivisionWithin(int requested, std::size_t triangles, std::size_t maxTriangles) {
+    int level = 0;
+    while (level < requested && (triangles << (2 * (level + 1))) <= maxTriangles) ++level;
+    return level;
+}
+
 } // namespace pf

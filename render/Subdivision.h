@@ -37,4 +37,9 @@ SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& t
                       const std::vector<float>* scalars, double sigma, int levels);
 SurfaceMesh subdivideSheet(const Sheet& sheet, double sigma, int levels);
 
+// The finest level up to `requested` at which `triangles` simulation triangles give at
+// most `maxTriangles` surface triangles (each level has four times the one before);
+// level 0 is always allowed.
+int subdivisionWithin(int requested, std::size_t triangles, std::size_t maxTriangles);
+
 } // namespace pf

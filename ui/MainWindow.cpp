@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 
+#include "AllocatorTuning.h"
 #include "OffscreenRenderer.h"
 #include "ParameterPanel.h"
 #include "PngFile.h"
@@ -62,6 +63,7 @@ const Overlay kOverlayBits[] = {OverlaySpringKinds, OverlayBreakProbability, Ove
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("MainWindow"));
+    keepLargeAllocationsReturnable(); // so that New gives a crumpled sheet's memory back
     sim_ = std::make_unique<SimulationThread>(sceneWorld(scene_));
     params_ = sceneWorld(scene_).params;
 

@@ -1,6 +1,7 @@
 #include "Viewport.h"
 
 #include "Legend.h"
+#include "Subdivision.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLContext>
@@ -107,7 +108,15 @@ void Viewport::paintGL() {
     timer.start();
     const qreal dpr = devicePixelRatioF();
     const int w = static_cast<int>(width() * dpr), h = static_cast<int>(height() * dpr);
-    if (renderer_.initialized() && snapshot_) renderer_.render(*snapshot_, camera_, options_, w, h);
+    if (renderer_.initialized() && snapshot_) {
+        // The editor draws at most kInteractiveTriangles: a crumpled sheet is drawn one
+        // level coarser rather than multiplying the frame time, and the software GL
+        // driver's memory (which keeps the largest recent frames) stays bounded.
+        RenderOptions drawn = options_;
+        drawn.subdivision =
+            subdivisionWithin(options_.subdivision, snapshot_->tris.size(), kInteractiveTriangles);
+        renderer_.render(*snapshot_, camera_, drawn, w, h);
+    }
     lastFrameSeconds_ = timer.nsecsElapsed() * 1e-9;
     emit frameDrawn();
 }
