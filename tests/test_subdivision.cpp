@@ -15,6 +15,17 @@ class TestSubdivision : public QObject {
     Q_OBJECT
 
   private slots:
+    void theInteractiveBudgetPicksTheFinestLevelThatFits() {
+        // A fresh A4 sheet (900 triangles) fits level 3 in 65,536 triangles (57,600).
+        QCOMPARE(subdivisionWithin(3, 900, 65536), 3);
+        QCOMPARE(subdivisionWithin(3, 1024, 65536), 3); // exactly 65,536
+        QCOMPARE(subdivisionWithin(3, 1025, 65536), 2);
+        QCOMPARE(subdivisionWithin(3, 16384, 65536), 1);
+        QCOMPARE(subdivisionWithin(3, 20000, 65536), 0); // level 0 is always allowed
+        QCOMPARE(subdivisionWithin(1, 10, 65536), 1);    // never finer than asked
+        QCOMPARE(subdivisionWithin(0, 10, 65536), 0);
+    }
+
     void sigmaZeroGivesThePlainMidpoint() {
         const Vec3 a(0.1, 0.2, 0.3), b(0.7, -0.1, 0.4);
         const Vec3 na = Vec3(0.2, 1, 0).normalized(), nb = Vec3(-0.3, 1, 0.1).normalized();
