@@ -113,7 +113,8 @@ bool unshareWorks() {
             {QStringLiteral("--user"), QStringLiteral("--map-root-user"), QStringLiteral("--mount"),
              QStringLiteral("sh"), QStringLiteral("-c"),
              QStringLiteral("mount -t tmpfs -o size=64k none /tmp")});
-    return p.waitForFinished(20000 * kSlowdown) && p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0;
+    return p.waitForFinished(20000 * kSlowdown) && p.exitStatus() == QProcess::NormalExit &&
+           p.exitCode() == 0;
 }
 
 // Runs `script` with $PF set to paperfold and $D a fresh tmpfs of `size` mounted on a
@@ -132,7 +133,8 @@ bool runInPrivateMount(const QString& outside, const QString& mountOptions, cons
     p.start(QStringLiteral("unshare"),
             {QStringLiteral("--user"), QStringLiteral("--map-root-user"), QStringLiteral("--mount"),
              QStringLiteral("sh"), QStringLiteral("-c"), full});
-    return p.waitForFinished(300000 * kSlowdown) && p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0;
+    return p.waitForFinished(300000 * kSlowdown) && p.exitStatus() == QProcess::NormalExit &&
+           p.exitCode() == 0;
 }
 
 QString readText(const QString& path) {
