@@ -53,6 +53,10 @@ class BoundedReader {
 
     QCborValue value(int depth) {
         if (failed()) return {};
+        // Every container and every tag nests one level: a file of nested tags must not
+        // recurse without bound either.
+        if (depth > bounds_.maxDepth)
+            return fail(QStringLiteral("values nested more than %1 deep").arg(bounds_.maxDepth));
         if (++values_ > bounds_.maxValues)
             return fail(QStringLiteral("more than %1 values in the file's structure")
                             .arg(bounds_.maxValues));

@@ -432,6 +432,25 @@ class TestHostileInput : public QObject {
         QVERIFY(pf::decodeWorld(bytes).world); // a few junk values are harmless
     }
 
+    void deepNestingIsRefusedWithoutRecursingForEver() {
+        // Found by fuzz_sheet_loader: 100,000 nested tags under a known key overflowed
+        // the stack. Nested arrays under a known and under an unknown key likewise.
+        const QByteArray tags =
+            QByteArray("\xa1\x65sheet", 7) + QByteArray(100000, '\xc6') + QByteArray(1, '\x00');
+        const QByteArray arrays =
+            QByteArray("\xa1\x65sheet", 7) + QByteArray(100000, '\x81') + QByteArray(1, '\x00');
+        const QByteArray unknown = QByteArray("\xa1\x65"
+                                              "extra",
+                                              7) +
+                                   QByteArray(100000, '\x81') + QByteArray(1, '\x00');
+        for (const QByteArray& bytes : {tags, arrays, unknown}) {
+            const pf::WorldLoad load = pf::decodeWorld(bytes);
+            QVERIFY(!load.world);
+            QVERIFY(!load.error.isEmpty());
+        }
+        QVERIFY(pf::decodeWorld(tags).error.contains(QStringLiteral("nested")));
+    }
+
     void devicesAndPipesAreNotRead() {
         QTemporaryDir dir;
         const QString fifo = dir.filePath(QStringLiteral("pipe.paper"));
