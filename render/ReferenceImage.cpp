@@ -16,6 +16,10 @@ QImage decodeReferenceImage(const QByteArray& bytes, QString* error) {
     buffer.setData(bytes);
     buffer.open(QIODevice::ReadOnly);
     QImageReader reader(&buffer, "png");
+    // PNG only: with detection on, Qt falls back to other formats (a GIF's header
+    // declared one size and decoded to another under the fuzzer).
+    reader.setDecideFormatFromContent(false);
+    reader.setAutoDetectImageFormat(false);
     const QSize size = reader.size();
     if (!size.isValid()) return fail(QStringLiteral("not a PNG image"));
     if (size.width() > kMaxReferenceSide || size.height() > kMaxReferenceSide)
@@ -26,6 +30,8 @@ QImage decodeReferenceImage(const QByteArray& bytes, QString* error) {
     QImage image = reader.read();
     if (image.isNull())
         return fail(QStringLiteral("not a readable PNG: %1").arg(reader.errorString()));
+    if (image.size() != size)
+        return fail(QStringLiteral("the PNG's size does not match its header"));
     return image;
 }
 

@@ -5,6 +5,7 @@
 // Each case is a regression test for a reproduction in the issue that found it.
 #include "OutputFile.h"
 #include "OutputPattern.h"
+#include "ReferenceImage.h"
 #include "Scenes.h"
 #include "SheetFile.h"
 
@@ -449,6 +450,21 @@ class TestHostileInput : public QObject {
             QVERIFY(!load.error.isEmpty());
         }
         QVERIFY(pf::decodeWorld(tags).error.contains(QStringLiteral("nested")));
+    }
+
+    void inputsTheFuzzersFoundAreRefused() {
+        // tests/fuzz/regressions: each once crashed a fuzz target.
+        const QDir dir(QStringLiteral(PAPERFOLD_FUZZ_REGRESSIONS));
+        QFile sheet(dir.filePath(QStringLiteral("sheet_nested_tags.bin")));
+        QVERIFY(sheet.open(QIODevice::ReadOnly));
+        const pf::WorldLoad load = pf::decodeWorld(sheet.readAll());
+        QVERIFY(!load.world && !load.error.isEmpty());
+        // A GIF whose header declares 11,308 pixels a side: a reference must be a PNG.
+        QFile gif(dir.filePath(QStringLiteral("reference_image_gif_header.bin")));
+        QVERIFY(gif.open(QIODevice::ReadOnly));
+        QString error;
+        QVERIFY(pf::decodeReferenceImage(gif.readAll(), &error).isNull());
+        QVERIFY(!error.isEmpty());
     }
 
     void devicesAndPipesAreNotRead() {
