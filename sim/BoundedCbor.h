@@ -13,7 +13,7 @@ struct CborBounds {
     // Map entries under any other key (or a key that is not short text) are skipped
     // while streaming, never built.
     QSet<QString> knownKeys;
-    int maxDepth = 8;         // containers nested deeper are refused
+    int maxDepth = 8;         // containers and tags nested deeper are refused
     qint64 maxValues = 50000; // values built in all (byte and text strings count once)
 };
 
