@@ -34,6 +34,9 @@ QJsonObject statsJson(const Simulation& sim, double wallSeconds, long long steps
     o[QStringLiteral("total_mass")] = st.totalMass;
     o[QStringLiteral("max_strain")] = st.maxStrain;
     o[QStringLiteral("rms_strain")] = st.rmsStrain;
+    o[QStringLiteral("max_stretch")] = st.maxStretch;
+    o[QStringLiteral("rms_stretch")] = st.rmsStretch;
+    o[QStringLiteral("max_compression")] = st.maxCompression;
     // Hex text: a 64-bit hash does not survive JSON's double-precision numbers.
     o[QStringLiteral("state_hash")] =
         QStringLiteral("%1").arg(stateHash(w.sheet), 16, 16, QLatin1Char('0'));

@@ -2,6 +2,7 @@
 #include "CommandLine.h"
 #include "EditorMain.h"
 #include "ExportCommand.h"
+#include "FidelityCommand.h"
 #include "RenderCommand.h"
 #include "SimulateCommand.h"
 #include "StabilityCommand.h"
@@ -27,6 +28,7 @@ void printUsage(QTextStream& out) {
            "  export     write the subdivided surface as .obj, .ply or .glb\n"
            "  render     render PNG stills or image sequences with no display (OSMesa)\n"
            "  stability  map where each integrator fails (CSV and heat maps)\n"
+           "  fidelity   check the sheet against physics (stretch, free fall, cantilever...)\n"
            "  bench      speed against accuracy of every integrator configuration (CSV, chart)\n"
            "\n"
            "paperfold <command> --help lists a command's options. The editor needs a\n"
@@ -82,6 +84,7 @@ int main(int argc, char* argv[]) {
         if (args[1] == QLatin1String("render")) return pf::cli::runRender(args);
         if (args[1] == QLatin1String("stability")) return pf::cli::runStability(args);
         if (args[1] == QLatin1String("bench")) return pf::cli::runBench(args);
+        if (args[1] == QLatin1String("fidelity")) return pf::cli::runFidelity(args);
         throw pf::cli::UsageError{QStringLiteral("unknown command '%1'").arg(args[1])};
     } catch (const pf::cli::UsageError& e) {
         err << "paperfold: " << e.message << '\n';

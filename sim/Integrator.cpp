@@ -3,6 +3,7 @@
 #include "BackwardEulerIntegrator.h"
 #include "JacobiIntegrator.h"
 #include "SymplecticEulerIntegrator.h"
+#include "XpbdIntegrator.h"
 
 namespace pf {
 
@@ -11,12 +12,13 @@ std::unique_ptr<Integrator> makeIntegrator(std::string_view name) {
     if (name == "jacobi-scalar") return std::make_unique<JacobiIntegrator>(true);
     if (name == "symplectic") return std::make_unique<SymplecticEulerIntegrator>();
     if (name == "backward-euler") return std::make_unique<BackwardEulerIntegrator>();
+    if (name == "xpbd") return std::make_unique<XpbdIntegrator>();
     return nullptr;
 }
 
 const std::vector<std::string>& integratorNames() {
     static const std::vector<std::string> names{"jacobi", "jacobi-scalar", "symplectic",
-                                                "backward-euler"};
+                                                "backward-euler", "xpbd"};
     return names;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "Collisions.h"
 #include "Params.h"
 #include "Sheet.h"
 
@@ -13,14 +14,28 @@ namespace pf {
 // Advances velocities and positions of a sheet by one step of length params.dt.
 // Pinned vertices keep the velocity the scene script gave them and move with it.
 // An integrator owns its scratch memory, so a step allocates nothing once warm.
+// What an integrator that resolves contacts inside its step needs to know of them.
+struct ContactScene {
+    SphereTool sphere; // center and velocity at the end of the step
+    bool ground = false;
+    double groundHeight = 0.0;
+};
+
 class Integrator {
   public:
     virtual ~Integrator() = default;
     virtual void advance(Sheet& sheet, const SimParams& params) = 0;
+    // True if advance() resolves the sphere and the ground itself (then the simulation
+    // does not collide again after it); setContacts() is called before each advance().
+    virtual bool resolvesContacts() const { return false; }
+    virtual void setContacts(const ContactScene&) {}
+    // True while the sheet sleeps: at rest, untouched, and not integrated.
+    virtual bool asleep() const { return false; }
 };
 
 // Names: "jacobi" (Eq. 6, 3×3 blocks), "jacobi-scalar" (Eq. 6, k·I blocks),
-// "symplectic" (symplectic Euler), "backward-euler" (Eq. 3 solved by conjugate gradient).
+// "symplectic" (symplectic Euler), "backward-euler" (Eq. 3 solved by conjugate gradient),
+// "xpbd" (implicit plate bending + sub-stepped XPBD, from the material's constants).
 // Returns nullptr for an unknown name.
 std::unique_ptr<Integrator> makeIntegrator(std::string_view name);
 const std::vector<std::string>& integratorNames();

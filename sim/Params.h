@@ -1,5 +1,6 @@
 #pragma once
 
+#include "Material.h"
 #include "Sheet.h"
 
 #include <array>
@@ -17,12 +18,22 @@ struct SimParams {
     double dt = 1.0 / 240.0;
     int iterations = 1; // Jacobi sweeps after the initial estimate (Eq. 6)
     std::string integrator = "jacobi";
+    // The paper the sheet is made of; used by "xpbd" (the other integrators keep the
+    // per-kind stiffness below, the paper's springs).
+    Material material;
+    int substeps = 10; // "xpbd": sub-steps per step
+    // "xpbd": Rayleigh damping of bending, β in seconds (damping force β Q v). It acts
+    // on bending motion only, so it leaves free fall and momentum alone.
+    double bendingDamping = 0.01;
 
     // Per spring kind, indexed by SpringKind. Stiffness in N/m, damping in N·s/m.
     std::array<double, kSpringKindCount> stiffness{100.0, 10.0, 100.0, 10.0};
     std::array<double, kSpringKindCount> damping{0.02, 0.002, 0.02, 0.002};
 
     double gravity = 9.81; // m/s^2 along -y
+    // "xpbd": gravity tilted by this angle (radians) toward +x, which is the same as a
+    // desk inclined by it. Only the fidelity scorecard's incline uses it; not saved.
+    double gravityTilt = 0.0;
 
     // Start the Jacobi iteration at Δv = h·g (gravity integrated outside the implicit
     // filter) instead of at 0 as Eq. 6 does. A rigid translation then falls exactly,

@@ -93,6 +93,16 @@ World dropScene(const SceneOptions& options) {
 
 } // namespace
 
+void setMaterial(World& world, const Material& material) {
+    Sheet& sheet = world.sheet;
+    const double scale = material.arealDensity / sheet.density;
+    for (double& m : sheet.verts.m) m *= scale;
+    for (DamageEvent& ev : sheet.events)
+        for (double& taken : ev.massTaken) taken *= scale;
+    sheet.density = material.arealDensity;
+    world.params.material = material;
+}
+
 const std::vector<std::string>& sceneNames() {
     static const std::vector<std::string> names{"press", "drape", "compress", "drop"};
     return names;

@@ -23,6 +23,10 @@ struct SceneOptions {
 std::optional<World> makeScene(std::string_view name, const SceneOptions& options = {});
 const std::vector<std::string>& sceneNames();
 
+// Makes the world's sheet of `material`: sets it in the parameters and scales the
+// masses to its areal density.
+void setMaterial(World& world, const Material& material);
+
 inline constexpr int kMinResolution = 3;
 inline constexpr int kMaxResolution = 200;
 

@@ -22,17 +22,23 @@ SheetStats computeStats(const Sheet& sheet) {
         if (ev.kind != EventKind::Break) continue;
         (ev.active ? st.breaks : st.recoveries) += 1;
     }
-    double sum2 = 0.0;
+    double sum2 = 0.0, stretch2 = 0.0;
     Index structural = 0;
     for (Index s = 0; s < S.size(); ++s) {
         if (S.kind[s] == SpringKind::Hinge) ++st.hinges;
         if (S.kind[s] != SpringKind::Structural) continue;
-        const double strain = std::abs((x[S.a[s]] - x[S.b[s]]).norm() / S.rest[s] - 1.0);
+        const double signedStrain = (x[S.a[s]] - x[S.b[s]]).norm() / S.rest[s] - 1.0;
+        const double strain = std::abs(signedStrain);
         st.maxStrain = std::max(st.maxStrain, strain);
         sum2 += strain * strain;
+        const double stretch = std::max(signedStrain, 0.0);
+        st.maxStretch = std::max(st.maxStretch, stretch);
+        stretch2 += stretch * stretch;
+        st.maxCompression = std::max(st.maxCompression, -signedStrain);
         ++structural;
     }
     st.rmsStrain = structural > 0 ? std::sqrt(sum2 / structural) : 0.0;
+    st.rmsStretch = structural > 0 ? std::sqrt(stretch2 / structural) : 0.0;
     st.totalMass = totalMass(sheet);
     return st;
 }

@@ -16,6 +16,10 @@ struct SheetStats {
     double totalMass = 0.0;
     double maxStrain = 0.0; // max |l/l0 - 1| over structural springs
     double rmsStrain = 0.0; // RMS of the same
+    // Tension only, over the same springs (creases are no longer structural).
+    double maxStretch = 0.0;     // max(l/l0 - 1, 0)
+    double rmsStretch = 0.0;     // RMS of max(l/l0 - 1, 0)
+    double maxCompression = 0.0; // max(1 - l/l0, 0)
 };
 
 SheetStats computeStats(const Sheet& sheet);

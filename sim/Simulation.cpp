@@ -45,13 +45,17 @@ StepStatus Simulation::step() {
 
     savedX_ = sheet.verts.x;
     savedV_ = sheet.verts.v;
-    integrator_->advance(sheet, p);
-
-    // Contact friction is expressed per reference step so it does not depend on h.
-    const double ref = p.breakReferenceStep;
-    collideSphere(sheet, w.sphere, std::pow(1.0 - p.sphereFriction, p.dt / ref));
-    if (w.groundEnabled)
-        collideGround(sheet, w.groundHeight, std::pow(1.0 - p.groundFriction, p.dt / ref));
+    if (integrator_->resolvesContacts()) {
+        integrator_->setContacts({w.sphere, w.groundEnabled, w.groundHeight});
+        integrator_->advance(sheet, p);
+    } else {
+        integrator_->advance(sheet, p);
+        // Contact friction is expressed per reference step so it does not depend on h.
+        const double ref = p.breakReferenceStep;
+        collideSphere(sheet, w.sphere, std::pow(1.0 - p.sphereFriction, p.dt / ref));
+        if (w.groundEnabled)
+            collideGround(sheet, w.groundHeight, std::pow(1.0 - p.groundFriction, p.dt / ref));
+    }
 
     if (!stateIsSane(sheet.verts)) {
         sheet.verts.x = savedX_;

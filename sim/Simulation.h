@@ -38,6 +38,8 @@ class Simulation {
 
     int lastBreaks() const { return lastBreaks_; }
     int lastHinges() const { return lastHinges_; }
+    // True while the integrator lets a sheet at rest sleep (costs almost nothing).
+    bool asleep() const { return integrator_->asleep(); }
 
   private:
     World world_;

@@ -1,0 +1,325 @@
+#include "Fidelity.h"
+
+#include "Scenes.h"
+#include "SheetBuilder.h"
+#include "SheetStats.h"
+#include "Simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace pf {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+void applySolver(SimParams& p, const FidelityOptions& o) {
+    p.integrator = o.integrator;
+    if (o.substeps > 0) p.substeps = o.substeps;
+}
+
+World configured(World w, const FidelityOptions& o) {
+    applySolver(w.params, o);
+    setMaterial(w, o.material);
+    return w;
+}
+
+Vec3 momentum(const Sheet& s) {
+    Vec3 p = Vec3::Zero();
+    for (Index i = 0; i < s.verts.size(); ++i) p += s.verts.m[i] * s.verts.v[i];
+    return p;
+}
+
+double kineticEnergy(const Sheet& s) {
+    double e = 0.0;
+    for (Index i = 0; i < s.verts.size(); ++i) e += 0.5 * s.verts.m[i] * s.verts.v[i].squaredNorm();
+    return e;
+}
+
+double maxSpeed(const Sheet& s) {
+    double v2 = 0.0;
+    for (const Vec3& v : s.verts.v) v2 = std::max(v2, v.squaredNorm());
+    return std::sqrt(v2);
+}
+
+int stepsFor(const World& w, double seconds) {
+    return static_cast<int>(std::lround(seconds / w.params.dt));
+}
+
+struct StretchRun {
+    double maxStretch = 0.0, maxRms = 0.0;
+};
+
+void addStretchRows(std::vector<FidelityRow>& rows, const std::string& scene, const StretchRun& r) {
+    rows.push_back({"stretch " + scene, "max over time of max(l/l0 - 1, 0)", 100.0 * r.maxStretch,
+                    1.0, true, "%"});
+    rows.push_back(
+        {"stretch " + scene, "max over time of RMS stretch", 100.0 * r.maxRms, 0.1, true, "%"});
+}
+
+// press: stretch, contact with the desk and the tool, and rest after the tool left.
+void pressChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
+    // The scene's sphere dips 1 cm below the desk, which only a soft sheet can follow
+    // (issue 9); here its lowest point stays half a millimetre above the desk, as the
+    // press of the paper's Fig. 13 does once xpbd is the default.
+    World start = configured(*makeScene("press"), o);
+    for (SphereKey& key : start.script.sphereKeys)
+        key.center.y() = std::max(key.center.y(), start.sphere.radius + 0.0005);
+    Simulation sim(start);
+    const World& w = sim.world();
+    const double leaves = w.script.sphereKeys.back().time;
+    const double end = o.quick ? leaves + 1.5 : leaves + 3.0;
+    StretchRun stretch;
+    double comMax = -1e9, inside = 0.0, below = 0.0, settled = -1.0;
+    const double radius = w.sphere.radius;
+    const int steps = stepsFor(w, end);
+    for (int k = 0; k < steps; ++k) {
+        if (sim.step() != StepStatus::Ok) break;
+        const Sheet& s = sim.world().sheet;
+        const SheetStats st = computeStats(s);
+        stretch.maxStretch = std::max(stretch.maxStretch, st.maxStretch);
+        stretch.maxRms = std::max(stretch.maxRms, st.rmsStretch);
+        double m = 0.0, my = 0.0;
+        for (Index i = 0; i < s.verts.size(); ++i) {
+            m += s.verts.m[i];
+            my += s.verts.m[i] * s.verts.x[i].y();
+            below = std::max(below, w.groundHeight - s.verts.x[i].y());
+            if (sim.world().sphere.active)
+                inside =
+                    std::max(inside, radius - (s.verts.x[i] - sim.world().sphere.center).norm());
+        }
+        comMax = std::max(comMax, my / m);
+        const double t = sim.world().time;
+        const bool quiet = kineticEnergy(s) < 1e-9 && maxSpeed(s) < 1e-3;
+        if (t > leaves) {
+            if (!quiet)
+                settled = -1.0;
+            else if (settled < 0.0)
+                settled = t - leaves;
+        }
+    }
+    addStretchRows(rows, "press", stretch);
+    rows.push_back({"press contact", "highest centre of mass", 100.0 * comMax, 2.0, true, "cm"});
+    rows.push_back({"press contact", "deepest vertex inside the sphere after a step",
+                    1000.0 * inside, 1e-6, true, "mm"});
+    rows.push_back({"press contact", "deepest vertex below the desk after a step", 1000.0 * below,
+                    1e-6, true, "mm"});
+    rows.push_back({"rest", "time after the tool left until KE < 1e-9 J and v < 1 mm/s for good",
+                    settled < 0.0 ? 1e9 : settled, 1.0, true, "s"});
+}
+
+void stretchCheck(const FidelityOptions& o, const std::string& scene,
+                  std::vector<FidelityRow>& rows) {
+    Simulation sim(configured(*makeScene(scene), o));
+    StretchRun r;
+    const int steps = stepsFor(sim.world(), o.quick ? 1.5 : 5.0);
+    for (int k = 0; k < steps && sim.step() == StepStatus::Ok; ++k) {
+        const SheetStats st = computeStats(sim.world().sheet);
+        r.maxStretch = std::max(r.maxStretch, st.maxStretch);
+        r.maxRms = std::max(r.maxRms, st.rmsStretch);
+    }
+    addStretchRows(rows, scene, r);
+}
+
+// A sheet in the air, no desk, no tool: the centre of mass must fall at g whatever
+// the sheet's shape, because internal forces cancel.
+void freeFallCheck(const FidelityOptions& o, const std::string& orientation,
+                   std::vector<FidelityRow>& rows) {
+    World w = configured(*makeScene("drop"), o);
+    w.groundEnabled = false;
+    w.sphere.active = false;
+    w.script = {};
+    Sheet& s = w.sheet;
+    Rng rng(7);
+    for (Index i = 0; i < s.verts.size(); ++i) {
+        const Vec2 X = s.verts.X[i];
+        Vec3& x = s.verts.x[i];
+        if (orientation == "flat") x = Vec3(X.x(), 1.0, X.y());
+        if (orientation == "tilted 45°")
+            x = Vec3(X.x(), 1.0 + X.y() * std::sin(kPi / 4), X.y() * std::cos(kPi / 4));
+        if (orientation == "hanging") x = Vec3(X.x(), 1.0 + X.y(), 0.0);
+        if (orientation == "crumpled")
+            x = Vec3(X.x(), 1.0 + 0.02 * (rng.uniform() - 0.5), X.y()) * 0.8;
+    }
+    Simulation sim(w);
+    const double mass = totalMass(sim.world().sheet);
+    const Vec3 p0 = momentum(sim.world().sheet);
+    const int steps = stepsFor(w, 0.5);
+    for (int k = 0; k < steps && sim.step() == StepStatus::Ok; ++k) {
+    }
+    const Vec3 a = (momentum(sim.world().sheet) - p0) / (mass * sim.world().time);
+    rows.push_back({"free fall " + orientation, "centre-of-mass acceleration / g, deviation",
+                    100.0 * std::abs(-a.y() / w.params.gravity - 1.0), 1.0, true, "%"});
+}
+
+void momentumCheck(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
+    World w = configured(*makeScene("drop"), o);
+    w.groundEnabled = false;
+    w.params.gravity = 0.0;
+    w.params.breaking = false;
+    Sheet& s = w.sheet;
+    Vec3 com = Vec3::Zero();
+    for (Index i = 0; i < s.verts.size(); ++i) com += s.verts.m[i] * s.verts.x[i];
+    com /= totalMass(s);
+    const Vec3 v0(1.0, 0.5, 0.2), omega(0.0, 3.0, 1.0);
+    for (Index i = 0; i < s.verts.size(); ++i) s.verts.v[i] = v0 + omega.cross(s.verts.x[i] - com);
+    Simulation sim(w);
+    const Vec3 p0 = momentum(sim.world().sheet);
+    const int steps = stepsFor(w, 1.0);
+    for (int k = 0; k < steps && sim.step() == StepStatus::Ok; ++k) {
+    }
+    const double drift = (momentum(sim.world().sheet) - p0).norm() / p0.norm() / sim.world().time;
+    rows.push_back(
+        {"momentum thrown", "linear momentum drift per second", 100.0 * drift, 0.1, true, "%"});
+}
+
+// A strip 2.5 cm wide clamped on a table, `overhang` of it sticking out; returns the
+// tip-chord angle at rest (radians).
+double cantileverAngle(const FidelityOptions& o, const Material& material, double overhang,
+                       bool quick) {
+    SheetSpec spec;
+    spec.width = 0.025;
+    const double clamped = 0.02;
+    spec.length = clamped + overhang;
+    const double cell = 0.0025;
+    spec.columns = static_cast<int>(std::lround(0.025 / cell)) + 1;
+    spec.rows = static_cast<int>(std::lround(spec.length / cell)) + 1;
+    spec.height = 0.1;
+    spec.density = material.arealDensity;
+    World w;
+    w.scene = "cantilever";
+    w.sheet = buildRectangleSheet(spec);
+    w.groundEnabled = false;
+    applySolver(w.params, o);
+    w.params.breaking = false;
+    w.params.hinges = false;
+    w.params.material = material;
+    const double edgeZ = -0.5 * spec.length + clamped;
+    PinGroup clamp;
+    for (Index i = 0; i < w.sheet.verts.size(); ++i)
+        if (w.sheet.verts.X[i].y() <= edgeZ + 1e-9) {
+            clamp.vertices.push_back(i);
+            w.sheet.verts.pinned[i] = 1;
+        }
+    w.script.pins.push_back(clamp);
+    Simulation sim(w);
+    const int steps = stepsFor(w, quick ? 2.0 : 4.0);
+    for (int k = 0; k < steps && sim.step() == StepStatus::Ok; ++k) {
+    }
+    const Sheet& s = sim.world().sheet;
+    Vec3 tip = Vec3::Zero(), edge = Vec3::Zero();
+    int nt = 0, ne = 0;
+    for (Index i = 0; i < s.verts.size(); ++i) {
+        if (s.verts.X[i].y() >= 0.5 * spec.length - 1e-9) {
+            tip += s.verts.x[i];
+            ++nt;
+        }
+        if (std::abs(s.verts.X[i].y() - edgeZ) < 1e-9) {
+            edge += s.verts.x[i];
+            ++ne;
+        }
+    }
+    const Vec3 chord = tip / nt - edge / ne;
+    return std::atan2(-chord.y(), chord.z());
+}
+
+void cantileverChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
+    const Material& m = o.material;
+    const double w = m.arealDensity * 9.81;
+    const double c = std::cbrt(m.bendingStiffness / w);
+    for (double overhang : {0.05, 0.10}) {
+        const double sim = cantileverAngle(o, m, overhang, o.quick);
+        const double peirce = peirceAngle(overhang, c);
+        rows.push_back({"cantilever " + std::to_string(int(std::lround(overhang * 100))) + " cm",
+                        "tip-chord angle " + std::to_string(sim * 180.0 / kPi).substr(0, 5) +
+                            "° vs Peirce " + std::to_string(peirce * 180.0 / kPi).substr(0, 5) +
+                            "°, deviation",
+                        100.0 * std::abs(sim / peirce - 1.0), 10.0, true, "%"});
+    }
+    Material card;
+    materialPreset("card", card);
+    const double office = cantileverAngle(o, m, 0.10, o.quick);
+    const double stiffer = cantileverAngle(o, card, 0.10, o.quick);
+    rows.push_back({"cantilever card vs " + m.name, "10 cm droop of card / of this material",
+                    stiffer / office, 1.0, true, "×"});
+}
+
+// The desk inclined by `alpha`: returns the distance the sheet's centre of mass slid
+// along the slope in the last `window` seconds and its acceleration over them.
+struct Slide {
+    double distance = 0.0, acceleration = 0.0;
+};
+Slide inclineRun(const FidelityOptions& o, double alpha, double seconds) {
+    SheetSpec spec = a4Spec(8);
+    spec.width = 0.1;
+    spec.length = 0.1;
+    spec.rows = 8;
+    spec.density = o.material.arealDensity;
+    World w;
+    w.scene = "incline";
+    w.sheet = buildRectangleSheet(spec);
+    applySolver(w.params, o);
+    w.params.material = o.material;
+    w.params.breaking = false;
+    w.params.gravityTilt = alpha;
+    Simulation sim(w);
+    const double mass = totalMass(sim.world().sheet);
+    const auto comX = [&] {
+        double x = 0.0;
+        const Sheet& s = sim.world().sheet;
+        for (Index i = 0; i < s.verts.size(); ++i) x += s.verts.m[i] * s.verts.x[i].x();
+        return x / mass;
+    };
+    const double x0 = comX();
+    const int steps = stepsFor(w, seconds);
+    for (int k = 0; k < steps && sim.step() == StepStatus::Ok; ++k) {
+    }
+    Slide r;
+    r.distance = comX() - x0;
+    r.acceleration = momentum(sim.world().sheet).x() / (mass * sim.world().time);
+    return r;
+}
+
+void inclineChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
+    const Material& m = o.material;
+    const double stick = std::atan(m.groundStaticFriction) - 5.0 * kPi / 180.0;
+    const double slide = std::atan(m.groundStaticFriction) + 10.0 * kPi / 180.0;
+    const double seconds = o.quick ? 0.5 : 1.0;
+    const Slide still = inclineRun(o, stick, seconds);
+    rows.push_back(
+        {"incline " + std::to_string(int(std::lround(stick * 180 / kPi))) + "° (below atan μs)",
+         "distance slid", 1000.0 * std::abs(still.distance), 0.1, true, "mm"});
+    const Slide moving = inclineRun(o, slide, seconds);
+    const double coulomb = 9.81 * (std::sin(slide) - m.groundKineticFriction * std::cos(slide));
+    rows.push_back({"incline " + std::to_string(int(std::lround(slide * 180 / kPi))) + "° (above)",
+                    "acceleration vs g(sin α - μk cos α), deviation",
+                    100.0 * std::abs(moving.acceleration / coulomb - 1.0), 5.0, true, "%"});
+}
+
+} // namespace
+
+double peirceAngle(double length, double bendingLength) {
+    const double target = std::pow(length / bendingLength, 3.0);
+    double lo = 0.0, hi = 0.5 * kPi - 1e-9;
+    for (int k = 0; k < 200; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (8.0 * std::tan(mid) / std::cos(0.5 * mid) < target ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+std::vector<FidelityRow> runFidelity(const FidelityOptions& o) {
+    std::vector<FidelityRow> rows;
+    pressChecks(o, rows);
+    for (const char* scene : {"drape", "compress", "drop"}) stretchCheck(o, scene, rows);
+    for (const char* orientation : {"flat", "tilted 45°", "hanging", "crumpled"})
+        freeFallCheck(o, orientation, rows);
+    momentumCheck(o, rows);
+    cantileverChecks(o, rows);
+    inclineChecks(o, rows);
+    return rows;
+}
+
+} // namespace pf

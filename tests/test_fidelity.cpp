@@ -1,0 +1,78 @@
+// The fidelity scorecard (`paperfold fidelity --quick`), row by row, through the same
+// code the command runs. Every bound comes from physics the project did not write.
+// Rows the default configuration does not meet yet are marked as expected failures
+// with the reason: the test then fails as soon as one starts passing (XPASS), so the
+// list cannot go stale, and a row that passes today cannot silently regress.
+#include "Fidelity.h"
+
+#include <QtTest>
+#include <set>
+
+using namespace pf;
+
+namespace {
+
+std::string key(const FidelityRow& r) {
+    return r.check + (r.measure.find("RMS") != std::string::npos ? " (RMS)" : "");
+}
+
+// issue 9, still open: see docs/material.md for the measurements.
+const std::set<std::string>& knownShort() {
+    static const std::set<std::string> rows{
+        "stretch press",       "stretch press (RMS)", "stretch drape",
+        "stretch drape (RMS)", "stretch compress",    "stretch compress (RMS)",
+        "stretch drop (RMS)",  "cantilever 5 cm",     "cantilever 10 cm",
+    };
+    return rows;
+}
+
+} // namespace
+
+class TestFidelity : public QObject {
+    Q_OBJECT
+    std::vector<FidelityRow> rows_;
+
+  private slots:
+    void initTestCase() {
+        FidelityOptions o;
+        o.quick = true;
+        rows_ = runFidelity(o);
+        QVERIFY(rows_.size() >= 20);
+    }
+
+    void everyCheckIsPresent() {
+        std::set<std::string> checks;
+        for (const FidelityRow& r : rows_) checks.insert(r.check.substr(0, r.check.find(' ')));
+        for (const char* c :
+             {"stretch", "press", "rest", "free", "momentum", "cantilever", "incline"})
+            QVERIFY2(checks.count(c), c);
+    }
+
+    void rowMeetsItsBound_data() {
+        QTest::addColumn<int>("index");
+        for (int i = 0; i < static_cast<int>(rows_.size()); ++i)
+            QTest::newRow((std::to_string(i) + ' ' + key(rows_[i])).c_str()) << i;
+    }
+    void rowMeetsItsBound() {
+        QFETCH(int, index);
+        const FidelityRow& r = rows_[index];
+        const QString what =
+            QStringLiteral("%1 (%2): %3 %4, bound %5")
+                .arg(QString::fromStdString(r.check), QString::fromStdString(r.measure))
+                .arg(r.value)
+                .arg(QString::fromStdString(r.unit))
+                .arg(r.bound);
+        if (knownShort().count(key(r)))
+            QEXPECT_FAIL("", "issue 9 is open: this bound is not met yet", Continue);
+        QVERIFY2(r.pass(), qPrintable(what));
+    }
+
+    void peirceIsTheFormulaNotARun() {
+        // Small overhangs: θ ≈ (l/c)³ / 8, the linear beam's w l⁴ / (8 D) over l.
+        const double c = 0.0726;
+        QCOMPARE_LE(std::abs(peirceAngle(0.01, c) - std::pow(0.01 / c, 3) / 8.0), 1e-6);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestFidelity)
+#include "test_fidelity.moc"
