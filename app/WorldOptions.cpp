@@ -43,6 +43,10 @@ void addWorldOptions(QCommandLineParser& parser) {
         {QStringLiteral("iterations"), QStringLiteral("Jacobi sweeps after the first estimate."),
          QStringLiteral("k")},
         {QStringLiteral("dt"), QStringLiteral("Time step in seconds."), QStringLiteral("h")},
+        {QStringLiteral("material"),
+         QStringLiteral("Paper (xpbd): %1.").arg(joined(materialNames())), QStringLiteral("name")},
+        {QStringLiteral("substeps"), QStringLiteral("Sub-steps per step (xpbd, 1-1000)."),
+         QStringLiteral("n")},
         {QStringLiteral("gravity-outside-filter"),
          QStringLiteral("Integrate gravity outside the implicit filter (the editor's default; "
                         "the paper's Eq. 6 divides it by W).")},
@@ -85,6 +89,16 @@ World worldFromOptions(const QCommandLineParser& parser) {
     if (auto v = integerOption(parser, QStringLiteral("iterations"), 0, 1000))
         p.iterations = static_cast<int>(*v);
     if (parser.isSet(QStringLiteral("gravity-outside-filter"))) p.gravityOutsideFilter = true;
+    if (auto v = integerOption(parser, QStringLiteral("substeps"), 1, 1000))
+        p.substeps = static_cast<int>(*v);
+    if (parser.isSet(QStringLiteral("material"))) {
+        const QString name = parser.value(QStringLiteral("material"));
+        Material m;
+        if (!materialPreset(name.toStdString(), m))
+            throw UsageError{QStringLiteral("unknown material '%1' (known: %2)")
+                                 .arg(name, joined(materialNames()))};
+        setMaterial(*world, m);
+    }
     if (parser.isSet(QStringLiteral("integrator"))) {
         const QString name = parser.value(QStringLiteral("integrator"));
         if (!makeIntegrator(name.toStdString()))

@@ -45,7 +45,7 @@ class XpbdIntegrator final : public Integrator {
   private:
     void rebuild(const Sheet& sheet, const SimParams& params);
     void factor(const Sheet& sheet, const SimParams& params);
-    void bendImplicitly(Sheet& sheet, const SimParams& params);
+    void bendImplicitly(Sheet& sheet, const SimParams& params, const Vec3& g);
     bool shouldSleep(const Sheet& sheet) const;
     bool mustWake(const Sheet& sheet) const;
 
@@ -55,6 +55,17 @@ class XpbdIntegrator final : public Integrator {
     std::vector<double> compliance_; // per spring; < 0: not a stretch constraint
     std::vector<double> maxPush_;    // per spring: compressive force before buckling, N
     std::vector<Stencil> stencils_;
+    // The stretch constraints packed for the sub-step loop, in spring order.
+    struct StretchConstraint {
+        Index a, b;
+        double rest, compliance, maxPush;
+    };
+    std::vector<StretchConstraint> stretch_;
+    struct Tether {
+        Index vertex, pin;
+        double length; // material distance: the paper between them, unstretched
+    };
+    std::vector<Tether> tethers_;
     Eigen::SparseMatrix<double> bending_; // Q: E_bend = ½ Σ_c xᵀ Q x over coordinates c
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
     std::vector<double> solveMass_; // M of the solve: pinned vertices made immovable

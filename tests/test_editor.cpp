@@ -295,6 +295,26 @@ class TestEditor : public QObject {
         QTRY_COMPARE(solver->gravityBox()->isChecked(), true);
     }
 
+    // Choosing card stock for the xpbd integrator makes the sheet 250/80 as heavy, and
+    // undo gives the office paper's masses back.
+    void choosingAPaperSetsItsWeight() {
+        SolverPanel* solver = window->solverPanel();
+        QueuedSignalSpy applied(window->simulation(), &SimulationThread::paramsApplied);
+        const double office = totalMass(worldOf(*window)->sheet);
+        solver->integratorBox()->setCurrentText(QStringLiteral("xpbd"));
+        QVERIFY(waitForCount(applied, 1));
+        solver->materialBox()->setCurrentText(QStringLiteral("card"));
+        QVERIFY(waitForCount(applied, 2));
+        QCOMPARE(applied.last().at(0).value<SimParams>().material.name, std::string("card"));
+        const auto world = worldOf(*window);
+        QCOMPARE(world->params.material.bendingStiffness, 1.0e-2);
+        QVERIFY(std::abs(totalMass(world->sheet) / office - 250.0 / 80.0) < 1e-9);
+        window->undoStack()->undo();
+        QVERIFY(waitForCount(applied, 3));
+        QTRY_COMPARE(solver->materialBox()->currentText(), QStringLiteral("office"));
+        QVERIFY(std::abs(totalMass(worldOf(*window)->sheet) / office - 1.0) < 1e-9);
+    }
+
     void openLatestChartShowsTheNewestBenchChart() {
         QTemporaryDir dir;
         QImage older(200, 100, QImage::Format_RGB32), newer(300, 150, QImage::Format_RGB32);

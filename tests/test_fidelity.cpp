@@ -1,11 +1,10 @@
 // The fidelity scorecard (`paperfold fidelity --quick`), row by row, through the same
-// code the command runs. Every bound comes from physics the project did not write.
-// Rows the default configuration does not meet yet are marked as expected failures
-// with the reason: the test then fails as soon as one starts passing (XPASS), so the
-// list cannot go stale, and a row that passes today cannot silently regress.
+// code the command runs. Every bound comes from physics the project did not write, and
+// the xpbd integrator with office paper meets each of them.
 #include "Fidelity.h"
 
 #include <QtTest>
+#include <cmath>
 #include <set>
 
 using namespace pf;
@@ -14,16 +13,6 @@ namespace {
 
 std::string key(const FidelityRow& r) {
     return r.check + (r.measure.find("RMS") != std::string::npos ? " (RMS)" : "");
-}
-
-// issue 9, still open: see docs/material.md for the measurements.
-const std::set<std::string>& knownShort() {
-    static const std::set<std::string> rows{
-        "stretch press",       "stretch press (RMS)", "stretch drape",
-        "stretch drape (RMS)", "stretch compress",    "stretch compress (RMS)",
-        "stretch drop (RMS)",  "cantilever 5 cm",     "cantilever 10 cm",
-    };
-    return rows;
 }
 
 } // namespace
@@ -62,8 +51,6 @@ class TestFidelity : public QObject {
                 .arg(r.value)
                 .arg(QString::fromStdString(r.unit))
                 .arg(r.bound);
-        if (knownShort().count(key(r)))
-            QEXPECT_FAIL("", "issue 9 is open: this bound is not met yet", Continue);
         QVERIFY2(r.pass(), qPrintable(what));
     }
 

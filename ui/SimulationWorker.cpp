@@ -2,6 +2,7 @@
 
 #include "Breaking.h"
 #include "Normals.h"
+#include "Scenes.h"
 #include "SheetStats.h"
 #include "SimulationThread.h"
 
@@ -57,6 +58,9 @@ void SimulationWorker::stepOnce() {
 }
 
 void SimulationWorker::setParams(const SimParams& params) {
+    // A different paper weighs differently: the masses follow its areal density.
+    if (!(params.material == sim_.world().params.material))
+        setMaterial(sim_.world(), params.material);
     sim_.world().params = params;
     owner_->emitOnGuiThread([o = owner_, params] { emit o->paramsApplied(params); });
     publish(0.0);

@@ -26,6 +26,7 @@ class SolverPanel : public QWidget {
     void showStatus(const SimulationStatus& status);
 
     QComboBox* integratorBox() const { return integrator_; }
+    QComboBox* materialBox() const { return material_; }
     QSpinBox* iterationsBox() const { return iterations_; }
     QCheckBox* gravityBox() const { return gravityOutside_; }
     QLabel* strainLabel() const { return strain_; }
@@ -47,6 +48,8 @@ class SolverPanel : public QWidget {
     QLabel *integratorLabel_ = nullptr, *iterationsLabel_ = nullptr, *dtLabel_ = nullptr,
            *stepTimeLabel_ = nullptr, *strainTitle_ = nullptr;
     QComboBox* integrator_ = nullptr;
+    QLabel* materialLabel_ = nullptr;
+    QComboBox* material_ = nullptr;
     QSpinBox* iterations_ = nullptr;
     QSpinBox* stepsPerSecond_ = nullptr;
     QCheckBox* gravityOutside_ = nullptr;
