@@ -127,6 +127,18 @@ QCborMap paramsToCbor(const SimParams& p) {
     m[QLatin1String("breakReferenceStep")] = p.breakReferenceStep;
     m[QLatin1String("groundFriction")] = p.groundFriction;
     m[QLatin1String("sphereFriction")] = p.sphereFriction;
+    QCborMap mat;
+    mat[QLatin1String("name")] = QString::fromStdString(p.material.name);
+    mat[QLatin1String("arealDensity")] = p.material.arealDensity;
+    mat[QLatin1String("stretchStiffness")] = p.material.stretchStiffness;
+    mat[QLatin1String("bendingStiffness")] = p.material.bendingStiffness;
+    mat[QLatin1String("groundStaticFriction")] = p.material.groundStaticFriction;
+    mat[QLatin1String("groundKineticFriction")] = p.material.groundKineticFriction;
+    mat[QLatin1String("toolStaticFriction")] = p.material.toolStaticFriction;
+    mat[QLatin1String("toolKineticFriction")] = p.material.toolKineticFriction;
+    m[QLatin1String("material")] = mat;
+    m[QLatin1String("substeps")] = p.substeps;
+    m[QLatin1String("bendingDamping")] = p.bendingDamping;
     return m;
 }
 
@@ -291,6 +303,25 @@ SimParams paramsFromCbor(const QCborMap& m) {
     p.breakReferenceStep = realAt(m, "breakReferenceStep", w, 1e-6, 10.0);
     p.groundFriction = realAt(m, "groundFriction", w, 0.0, 1.0);
     p.sphereFriction = realAt(m, "sphereFriction", w, 0.0, 1.0);
+    // The material and the xpbd settings came after the first files were written:
+    // a file without them has office paper and the defaults.
+    if (m.contains(QLatin1String("material"))) {
+        const QString wm = QStringLiteral("params.material");
+        const QCborMap mat = mapAt(m, "material", w);
+        Material& x = p.material;
+        x.name = textAt(mat, "name", wm, 64).toStdString();
+        x.arealDensity = realAt(mat, "arealDensity", wm, 1e-4, 10.0);
+        x.stretchStiffness = realAt(mat, "stretchStiffness", wm, 1.0, 1e9);
+        x.bendingStiffness = realAt(mat, "bendingStiffness", wm, 1e-9, 10.0);
+        x.groundStaticFriction = realAt(mat, "groundStaticFriction", wm, 0.0, 10.0);
+        x.groundKineticFriction = realAt(mat, "groundKineticFriction", wm, 0.0, 10.0);
+        x.toolStaticFriction = realAt(mat, "toolStaticFriction", wm, 0.0, 10.0);
+        x.toolKineticFriction = realAt(mat, "toolKineticFriction", wm, 0.0, 10.0);
+    }
+    if (m.contains(QLatin1String("substeps")))
+        p.substeps = static_cast<int>(integerAt(m, "substeps", w, 1, 1000));
+    if (m.contains(QLatin1String("bendingDamping")))
+        p.bendingDamping = realAt(m, "bendingDamping", w, 0.0, 10.0);
     return p;
 }
 
@@ -487,6 +518,17 @@ const CborBounds& sheetFileBounds() {
                                 "breakReferenceStep",
                                 "groundFriction",
                                 "sphereFriction",
+                                "material",
+                                "name",
+                                "arealDensity",
+                                "stretchStiffness",
+                                "bendingStiffness",
+                                "groundStaticFriction",
+                                "groundKineticFriction",
+                                "toolStaticFriction",
+                                "toolKineticFriction",
+                                "substeps",
+                                "bendingDamping",
                                 "sphere",
                                 "center",
                                 "velocity",

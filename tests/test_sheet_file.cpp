@@ -127,6 +127,34 @@ class TestSheetFile : public QObject {
         QCOMPARE(encodeWorld(r), encodeWorld(w));
     }
 
+    // The paper and the xpbd settings travel with the sheet; a file written before they
+    // existed (no such keys) loads as office paper with the defaults.
+    void materialRoundTripsAndOldFilesGetOfficePaper() {
+        World w = *makeScene("drape");
+        w.params.integrator = "xpbd";
+        w.params.substeps = 12;
+        w.params.bendingDamping = 0.02;
+        Material card;
+        QVERIFY(materialPreset("card", card));
+        setMaterial(w, card);
+        const WorldLoad l = decodeWorld(encodeWorld(w));
+        QVERIFY2(l.world, qPrintable(l.error));
+        QVERIFY(l.world->params.material == card);
+        QCOMPARE(l.world->params.substeps, 12);
+        QCOMPARE(l.world->params.bendingDamping, 0.02);
+        QVERIFY(l.world->sheet.verts.m == w.sheet.verts.m);
+
+        QCborMap root = QCborValue::fromCbor(encodeWorld(*makeScene("press"))).toMap();
+        QCborMap params = root[QLatin1String("params")].toMap();
+        for (const char* key : {"material", "substeps", "bendingDamping"})
+            params.remove(QLatin1String(key));
+        root[QLatin1String("params")] = params;
+        const WorldLoad old = decodeWorld(QCborValue(root).toCbor());
+        QVERIFY2(old.world, qPrintable(old.error));
+        QVERIFY(old.world->params.material == Material{});
+        QCOMPARE(old.world->params.substeps, SimParams{}.substeps);
+    }
+
     void recoveryWorksOnALoadedSheet() {
         World r = *decodeWorld(validFile()).world;
         Sheet& s = r.sheet;
