@@ -21,7 +21,7 @@ struct SimParams {
     // The paper the sheet is made of; used by "xpbd" (the other integrators keep the
     // per-kind stiffness below, the paper's springs).
     Material material;
-    int substeps = 32; // "xpbd": sub-steps per step (the fewest that meet every stretch bound)
+    int substeps = 40; // "xpbd": sub-steps per step (docs/material.md: 32 left 1.08 % stretch)
     // "xpbd": Rayleigh damping of bending, β in seconds (damping force β Q v). It acts
     // on bending motion only, so it leaves free fall and momentum alone.
     double bendingDamping = 0.01;

@@ -210,6 +210,36 @@ std::vector<XpbdIntegrator::Stencil> XpbdIntegrator::bendingStencils(const Sheet
     return out;
 }
 
+// Greedy colouring in spring order (deterministic), then the constraints sorted by
+// colour, stably: neighbours in a pass share no vertex, so the processor overlaps their
+// square roots and divisions instead of waiting for each one's positions. Measured on
+// press at 494 vertices: 2.5 times faster per sub-step than spring order. Spring order
+// converges a little better per sub-step (a pull travels along a row in one pass), so
+// the default sub-step count went from 32 to 40, still twice as fast as before.
+void XpbdIntegrator::colourStretchConstraints(Index vertices) {
+    constexpr int kColours = 63; // the last one takes whatever is left
+    std::vector<std::uint64_t> used(static_cast<std::size_t>(vertices), 0);
+    std::vector<int> colour(stretch_.size(), kColours);
+    for (std::size_t q = 0; q < stretch_.size(); ++q) {
+        const std::uint64_t taken = used[stretch_[q].a] | used[stretch_[q].b];
+        for (int c = 0; c < kColours; ++c)
+            if (!(taken & (std::uint64_t{1} << c))) {
+                colour[q] = c;
+                used[stretch_[q].a] |= std::uint64_t{1} << c;
+                used[stretch_[q].b] |= std::uint64_t{1} << c;
+                break;
+            }
+    }
+    std::vector<std::size_t> order(stretch_.size());
+    for (std::size_t q = 0; q < order.size(); ++q) order[q] = q;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t x, std::size_t y) { return colour[x] < colour[y]; });
+    std::vector<StretchConstraint> sorted;
+    sorted.reserve(stretch_.size());
+    for (std::size_t q : order) sorted.push_back(stretch_[q]);
+    stretch_.swap(sorted);
+}
+
 void XpbdIntegrator::rebuild(const Sheet& sheet, const SimParams& params) {
     const auto& S = sheet.springs;
     const Material& m = params.material;
@@ -248,6 +278,7 @@ void XpbdIntegrator::rebuild(const Sheet& sheet, const SimParams& params) {
     for (Index s = 0; s < S.size(); ++s)
         if (compliance_[s] >= 0.0)
             stretch_.push_back({S.a[s], S.b[s], S.rest[s], compliance_[s], maxPush_[s]});
+    colourStretchConstraints(sheet.verts.size());
     stencils_ = bendingStencils(sheet, m);
     tethers_.clear();
     const auto& V = sheet.verts;

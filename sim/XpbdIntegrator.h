@@ -45,6 +45,7 @@ class XpbdIntegrator final : public Integrator {
   private:
     void rebuild(const Sheet& sheet, const SimParams& params);
     void factor(const Sheet& sheet, const SimParams& params);
+    void colourStretchConstraints(Index vertices);
     void bendImplicitly(Sheet& sheet, const SimParams& params, const Vec3& g);
     bool shouldSleep(const Sheet& sheet) const;
     bool mustWake(const Sheet& sheet) const;
@@ -55,7 +56,7 @@ class XpbdIntegrator final : public Integrator {
     std::vector<double> compliance_; // per spring; < 0: not a stretch constraint
     std::vector<double> maxPush_;    // per spring: compressive force before buckling, N
     std::vector<Stencil> stencils_;
-    // The stretch constraints packed for the sub-step loop, in spring order.
+    // The stretch constraints packed for the sub-step loop, ordered by colour.
     struct StretchConstraint {
         Index a, b;
         double rest, compliance, maxPush;
