@@ -11,6 +11,7 @@ bool materialPreset(std::string_view name, Material& out) {
         m.arealDensity = 0.020;      // 20 g/m²
         m.stretchStiffness = 5.0e4;  // E ≈ 1 GPa, t ≈ 0.05 mm
         m.bendingStiffness = 1.2e-5; // E t³ / 12(1 − ν²)
+        m.yieldCurvature = 200.0;    // 2 ε_y / t
         m.groundStaticFriction = 0.5;
         m.groundKineticFriction = 0.4;
     } else if (name == "card") {
@@ -18,6 +19,7 @@ bool materialPreset(std::string_view name, Material& out) {
         m.arealDensity = 0.250;      // 250 g/m²
         m.stretchStiffness = 1.2e6;  // E ≈ 4 GPa, t ≈ 0.3 mm
         m.bendingStiffness = 1.0e-2; // E t³ / 12(1 − ν²)
+        m.yieldCurvature = 33.0;     // 2 ε_y / t
         m.groundStaticFriction = 0.4;
         m.groundKineticFriction = 0.3;
     } else {

@@ -14,6 +14,10 @@ struct Material {
     double arealDensity = 0.080;      // kg/m² (80 g/m²)
     double stretchStiffness = 4.0e5;  // E·t, N/m (E ≈ 4 GPa, t ≈ 0.1 mm)
     double bendingStiffness = 3.0e-4; // D, N·m
+    // Curvature beyond which bending is plastic (1/m): the fibres at the surface yield
+    // at a strain ε_y ≈ 0.5 %, κ_y = 2 ε_y / t. Bent further, paper keeps the extra
+    // curvature when let go (a fold stays); 100/m is a 1 cm radius at t = 0.1 mm.
+    double yieldCurvature = 100.0;
     // Coulomb friction of the paper against the desk and against the tool.
     double groundStaticFriction = 0.45;
     double groundKineticFriction = 0.35;

@@ -30,6 +30,10 @@ struct SimParams {
     std::array<double, kSpringKindCount> stiffness{100.0, 10.0, 100.0, 10.0};
     std::array<double, kSpringKindCount> damping{0.02, 0.002, 0.02, 0.002};
 
+    // "xpbd": how hard the tool presses the paper onto the desk (N); its grip is at most
+    // the tool's friction coefficient times this.
+    double toolForce = 2.0;
+
     double gravity = 9.81; // m/s^2 along -y
     // "xpbd": gravity tilted by this angle (radians) toward +x, which is the same as a
     // desk inclined by it. Only the fidelity scorecard's incline uses it; not saved.

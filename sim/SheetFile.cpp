@@ -132,6 +132,7 @@ QCborMap paramsToCbor(const SimParams& p) {
     mat[QLatin1String("arealDensity")] = p.material.arealDensity;
     mat[QLatin1String("stretchStiffness")] = p.material.stretchStiffness;
     mat[QLatin1String("bendingStiffness")] = p.material.bendingStiffness;
+    mat[QLatin1String("yieldCurvature")] = p.material.yieldCurvature;
     mat[QLatin1String("groundStaticFriction")] = p.material.groundStaticFriction;
     mat[QLatin1String("groundKineticFriction")] = p.material.groundKineticFriction;
     mat[QLatin1String("toolStaticFriction")] = p.material.toolStaticFriction;
@@ -139,6 +140,7 @@ QCborMap paramsToCbor(const SimParams& p) {
     m[QLatin1String("material")] = mat;
     m[QLatin1String("substeps")] = p.substeps;
     m[QLatin1String("bendingDamping")] = p.bendingDamping;
+    m[QLatin1String("toolForce")] = p.toolForce;
     return m;
 }
 
@@ -313,6 +315,11 @@ SimParams paramsFromCbor(const QCborMap& m) {
         x.arealDensity = realAt(mat, "arealDensity", wm, 1e-4, 10.0);
         x.stretchStiffness = realAt(mat, "stretchStiffness", wm, 1.0, 1e9);
         x.bendingStiffness = realAt(mat, "bendingStiffness", wm, 1e-9, 10.0);
+        // Files from before plastic bending keep their preset's yield.
+        if (mat.contains(QLatin1String("yieldCurvature")))
+            x.yieldCurvature = realAt(mat, "yieldCurvature", wm, 1e-3, 1e6);
+        else if (Material preset; materialPreset(x.name, preset))
+            x.yieldCurvature = preset.yieldCurvature;
         x.groundStaticFriction = realAt(mat, "groundStaticFriction", wm, 0.0, 10.0);
         x.groundKineticFriction = realAt(mat, "groundKineticFriction", wm, 0.0, 10.0);
         x.toolStaticFriction = realAt(mat, "toolStaticFriction", wm, 0.0, 10.0);
@@ -322,6 +329,8 @@ SimParams paramsFromCbor(const QCborMap& m) {
         p.substeps = static_cast<int>(integerAt(m, "substeps", w, 1, 1000));
     if (m.contains(QLatin1String("bendingDamping")))
         p.bendingDamping = realAt(m, "bendingDamping", w, 0.0, 10.0);
+    if (m.contains(QLatin1String("toolForce")))
+        p.toolForce = realAt(m, "toolForce", w, 0.0, 1000.0);
     return p;
 }
 
@@ -523,12 +532,14 @@ const CborBounds& sheetFileBounds() {
                                 "arealDensity",
                                 "stretchStiffness",
                                 "bendingStiffness",
+                                "yieldCurvature",
                                 "groundStaticFriction",
                                 "groundKineticFriction",
                                 "toolStaticFriction",
                                 "toolKineticFriction",
                                 "substeps",
                                 "bendingDamping",
+                                "toolForce",
                                 "sphere",
                                 "center",
                                 "velocity",

@@ -31,6 +31,35 @@ bool stateIsSane(const Vertices& V) {
     return true;
 }
 
+// Half a millimetre: a few sheets of paper, and within the tool's grip (kToolReach).
+constexpr double kToolAboveDesk = 0.0005;
+
+// The tool is rigid and so is the desk: however deep a script or the mouse asks it to
+// go, the sphere rests on the desk, with the paper between them, instead of pressing
+// the paper through the desk or squeezing it flat to nothing.
+void keepToolAboveDesk(World& w) {
+    SphereTool& sp = w.sphere;
+    if (!w.groundEnabled || !sp.active) return;
+    const double lowest = w.groundHeight + sp.radius + kToolAboveDesk;
+    if (!(sp.center.y() < lowest)) return;
+    const Vec3 previous = sp.center - sp.velocity * w.params.dt;
+    sp.center.y() = lowest;
+    sp.velocity = (sp.center - previous) / w.params.dt;
+}
+
+void keepOutOfContacts(World& w, Index firstVertex) {
+    auto& V = w.sheet.verts;
+    const SphereTool& sp = w.sphere;
+    for (Index i = firstVertex; i < V.size(); ++i) {
+        if (sp.active) {
+            const Vec3 d = V.x[i] - sp.center;
+            const double dist = d.norm();
+            if (dist < sp.radius && dist > 0.0) V.x[i] = sp.center + d * (sp.radius / dist);
+        }
+        if (w.groundEnabled && V.x[i].y() < w.groundHeight) V.x[i].y() = w.groundHeight;
+    }
+}
+
 } // namespace
 
 StepStatus Simulation::step() {
@@ -42,6 +71,9 @@ StepStatus Simulation::step() {
     lastBreaks_ = lastHinges_ = 0;
 
     applyScript(w.script, w.time, p.dt, sheet, w.sphere);
+    // The paper's springs are soft enough to be squeezed under a sphere that dips below
+    // the desk (the press scene is drawn for them); real paper is not.
+    if (integrator_->resolvesContacts()) keepToolAboveDesk(w);
 
     savedX_ = sheet.verts.x;
     savedV_ = sheet.verts.v;
@@ -63,8 +95,17 @@ StepStatus Simulation::step() {
         return StepStatus::Diverged;
     }
 
-    if (p.breaking) lastBreaks_ = runBreakPass(sheet, p, w.rng, w.stepCount, breakScratch_);
-    if (p.hinges) lastHinges_ = runHingePass(sheet, p, w.stepCount);
+    // A sheet at rest is not being loaded, so it does not break: Eq. 10 would otherwise
+    // keep drawing on edges left compressed where the sheet came to rest.
+    if (!integrator_->asleep()) {
+        const Index before = sheet.verts.size();
+        if (p.breaking) lastBreaks_ = runBreakPass(sheet, p, w.rng, w.stepCount, breakScratch_);
+        // Eq. 11 lifts a new vertex off the edge toward the side it bends to, which
+        // can be into the desk or the tool; an integrator that keeps the sheet out of
+        // them gets the vertex back on their surface.
+        if (integrator_->resolvesContacts()) keepOutOfContacts(w, before);
+        if (p.hinges) lastHinges_ = runHingePass(sheet, p, w.stepCount);
+    }
 
     ++w.stepCount;
     w.time += p.dt;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 
 namespace pf {
@@ -38,6 +39,50 @@ void addTriangleStiffness(const Sheet& sheet, const Triangle& t, double et,
         return;
     }
     for (Index e : t.e) k[e] += 0.375 * et;
+}
+
+// Barycentric coordinates of the point of triangle (a, b, c) closest to p (Ericson,
+// Real-Time Collision Detection, 5.1.5).
+Vec3 closestPointBarycentric(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+    if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
+    const Vec3 bp = p - b;
+    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+    if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+        const double v = d1 / (d1 - d3);
+        return {1.0 - v, v, 0.0};
+    }
+    const Vec3 cp = p - c;
+    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+    if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+        const double w = d2 / (d2 - d6);
+        return {1.0 - w, 0.0, w};
+    }
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+        const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return {0.0, 1.0 - w, w};
+    }
+    const double denom = 1.0 / (va + vb + vc);
+    const double v = vb * denom, w = vc * denom;
+    return {1.0 - v - w, v, w};
+}
+
+// Euler buckling of the strip spring s stands for (width (A1 + A2) / l0, pinned ends):
+// more push than this and real paper buckles out of plane at a scale finer than the
+// mesh, which is what a break stands for.
+double bucklingLoad(const Sheet& sheet, Index s, const Material& m) {
+    const auto& S = sheet.springs;
+    double area = 0.0;
+    for (Index t : S.faces[s])
+        if (t != kNone) area += restArea(sheet, sheet.tris[t]);
+    const double l0 = S.rest[s];
+    return std::numbers::pi * std::numbers::pi * m.bendingStiffness * area / (l0 * l0 * l0);
 }
 
 } // namespace
@@ -125,6 +170,14 @@ std::vector<XpbdIntegrator::Stencil> XpbdIntegrator::bendingStencils(const Sheet
     }
     std::vector<Stencil> out;
     const auto add = [&](Stencil st, double stiffness) {
+        // Σ k x for the bowl ½|X|² and for the saddle u v, in material coordinates.
+        double bowl = 0.0, saddle = 0.0;
+        for (int q = 0; q < st.count; ++q) {
+            const Vec2 d = sheet.verts.X[st.v[q]] - sheet.verts.X[st.v[0]];
+            bowl += st.k[q] * 0.5 * d.squaredNorm();
+            saddle += st.k[q] * d.x() * d.y();
+        }
+        st.unit = std::max(std::abs(bowl), std::abs(saddle));
         bool crease = false;
         for (int q = 0; q < st.count; ++q) crease = crease || creased[st.v[q]];
         if (crease) stiffness *= kCreaseBendingShare;
@@ -251,35 +304,50 @@ void XpbdIntegrator::rebuild(const Sheet& sheet, const SimParams& params) {
         case SpringKind::Structural: {
             if (!(k[s] > 0.0)) break;
             compliance_[s] = 1.0 / k[s];
-            // Euler buckling of the strip the edge stands for (width (A1 + A2) / l0,
-            // pinned ends): more push than this and real paper buckles out of plane
-            // at a scale finer than the mesh, which is what a break stands for.
-            double area = 0.0;
-            for (Index t : S.faces[s])
-                if (t != kNone) area += restArea(sheet, sheet.tris[t]);
-            const double l0 = S.rest[s];
-            maxPush_[s] =
-                std::numbers::pi * std::numbers::pi * m.bendingStiffness * area / (l0 * l0 * l0);
+            maxPush_[s] = bucklingLoad(sheet, s, m);
             break;
         }
-        case SpringKind::Crease:
+        case SpringKind::Crease: {
+            // A crease holds the compressed length it broke at only as firmly as the
+            // buckled strip it stands for: up to its buckling load either way. Held
+            // rigidly, it fought the uncreased paper around it, which cannot follow a
+            // shortened edge without stretching (20 % stretch next to press's creases).
             compliance_[s] = 1.0 / k[s];
-            maxPush_[s] = std::numeric_limits<double>::infinity();
+            maxPush_[s] = bucklingLoad(sheet, s, m);
             break;
+        }
         case SpringKind::Hinge:
-            compliance_[s] = 1.0 / params.stiffnessOf(SpringKind::Hinge);
+            // A hinge keeps the flaps of a closed fold from passing through each other:
+            // a hard, one-sided limit (no pull below). As a two-sided spring of the
+            // paper's 100 N/m it rang undamped against the light vertices of the fold
+            // (period 1.7 ms) and held 3 % stretch in press long after the tool left.
+            compliance_[s] = 0.0;
             maxPush_[s] = std::numeric_limits<double>::infinity();
             break;
         case SpringKind::Bending: // bending is the stencils' job here
             break;
         }
     }
+    longestEdge_ = 0.0;
+    for (Index s = 0; s < S.size(); ++s) longestEdge_ = std::max(longestEdge_, S.rest[s]);
     stretch_.clear();
     for (Index s = 0; s < S.size(); ++s)
         if (compliance_[s] >= 0.0)
-            stretch_.push_back({S.a[s], S.b[s], S.rest[s], compliance_[s], maxPush_[s]});
+            stretch_.push_back({S.a[s], S.b[s], S.rest[s], compliance_[s], maxPush_[s],
+                                S.kind[s] == SpringKind::Crease ? maxPush_[s]
+                                : S.kind[s] == SpringKind::Hinge
+                                    ? 0.0
+                                    : std::numeric_limits<double>::infinity()});
     colourStretchConstraints(sheet.verts.size());
+    // A fold the paper has yielded into stays when the mesh changes elsewhere.
+    std::map<std::array<Index, 5>, Vec3> kept;
+    for (std::size_t q = 0; q < stencils_.size() && q < plastic_.size(); ++q)
+        if (plastic_[q] != Vec3::Zero()) kept[stencils_[q].v] = plastic_[q];
     stencils_ = bendingStencils(sheet, m);
+    plastic_.assign(stencils_.size(), Vec3::Zero());
+    if (!kept.empty())
+        for (std::size_t q = 0; q < stencils_.size(); ++q)
+            if (auto it = kept.find(stencils_[q].v); it != kept.end()) plastic_[q] = it->second;
     tethers_.clear();
     const auto& V = sheet.verts;
     std::vector<Index> pins;
@@ -299,6 +367,7 @@ void XpbdIntegrator::rebuild(const Sheet& sheet, const SimParams& params) {
             tethers_.push_back(t);
         }
     builtFor_ = m;
+    grips_.clear(); // triangles are renumbered
     factor(sheet, params);
 }
 
@@ -316,41 +385,157 @@ void XpbdIntegrator::factor(const Sheet& sheet, const SimParams& params) {
     bending_.resize(nv, nv);
     bending_.setFromTriplets(entries.begin(), entries.end());
     // Pinned vertices follow their script: in the solve they weigh a million times more,
-    // which moves them by a millionth of what bending would, and they are reset after.
+    // which moves them by a millionth of what bending would, and their solved velocity
+    // is discarded.
     solveMass_.resize(static_cast<std::size_t>(nv));
     for (Index i = 0; i < nv; ++i) solveMass_[i] = V.pinned[i] ? 1e6 * V.m[i] + 1e-3 : V.m[i];
-    const double h = params.dt;
+    const double h = solveStep(params);
     Eigen::SparseMatrix<double> a = (h * h + params.bendingDamping * h) * bending_;
     for (Index i = 0; i < nv; ++i) a.coeffRef(i, i) += solveMass_[i];
     solver_.compute(a);
     factored_ = solver_.info() == Eigen::Success;
-    factoredDt_ = params.dt;
+    factoredDt_ = h;
     factoredDamping_ = params.bendingDamping;
 }
 
-// Backward Euler for gravity and the bending force f = -Q x:
-// (M + (h² + βh) Q) v' = M v + h M g - h Q x.
-// Gravity belongs inside this solve, not in the sub-steps: applied in the sub-steps,
-// the velocity left after the solve (−g h (n+1)/2n at rest) met the damping and h²
-// terms, and a clamped strip sank by (h + β) g h (n+1)/2n, 0.32 mm whatever its D.
-void XpbdIntegrator::bendImplicitly(Sheet& sheet, const SimParams& params, const Vec3& g) {
+// Plastic bending: where Σ k x strays from its rest value r by more than the yield
+// (κ_y in the stencil's measure), r follows it, so the elastic part never exceeds the
+// yield moment D κ_y and the rest stays when the paper is let go. The energy
+// ½ c |Σ k x − r|² adds the force c k_q r to vertex q, so the matrix stays the one
+// already factored. r is a vector in world space: a rest value along the surface
+// normal alone left the in-plane part of a sharp fold elastic, and the sheet fought
+// its own pleats for seconds after the tool had left. (Σ k = 0, so r exerts no net
+// force; a yielded region turned as a whole feels at most the yield moment.)
+void XpbdIntegrator::yieldPlastically(const Sheet& sheet, const Material& m) {
+    const auto& V = sheet.verts;
+    plasticForce_.assign(static_cast<std::size_t>(V.size()), Vec3::Zero());
+    anyPlastic_ = false;
+    for (std::size_t q = 0; q < stencils_.size(); ++q) {
+        const Stencil& st = stencils_[q];
+        Vec3 y = Vec3::Zero();
+        for (int k = 0; k < st.count; ++k) y += st.k[k] * V.x[st.v[k]];
+        Vec3& r = plastic_[q];
+        const Vec3 elastic = y - r;
+        const double yield = m.yieldCurvature * st.unit;
+        const double size2 = elastic.squaredNorm();
+        if (size2 > yield * yield) r = y - elastic * (yield / std::sqrt(size2));
+        if (r == Vec3::Zero()) continue;
+        anyPlastic_ = true;
+        const Vec3 f = r / st.compliance;
+        for (int k = 0; k < st.count; ++k) plasticForce_[st.v[k]] += st.k[k] * f;
+    }
+}
+
+// One sub-step of backward Euler for gravity and the bending force f = -Q x (plus the
+// plastic rest), with h the sub-step: (M + (h² + βh) Q) v' = M v + h M g - h Q x.
+// It runs in every sub-step, before the stretch pass, so that bending and stretch meet
+// as forces in small steps. Solved once per step instead, bending that inextensible
+// paper could not follow (a pleat pressed against the desk) came back each step as a
+// velocity kick of up to 0.5 m/s that the sub-steps undid: the sheet never came to
+// rest and kept 1-3 % stretch. Gravity is inside the same solve: added separately, the
+// velocity it left met the damping term and a clamped strip sank by 0.32 mm.
+void XpbdIntegrator::bendImplicitly(Sheet& sheet, const Vec3& g, double h) {
     auto& V = sheet.verts;
     const Index nv = V.size();
     if (!factored_ || nv == 0) {
         for (Index i = 0; i < nv; ++i)
-            if (!V.pinned[i]) V.v[i] += params.dt * g;
+            if (!V.pinned[i]) V.v[i] += h * g;
         return;
     }
     rhs_.resize(nv, 3);
     sol_.resize(nv, 3);
     for (Index i = 0; i < nv; ++i) rhs_.row(i) = V.x[i].transpose();
     sol_ = bending_ * rhs_; // Q x
-    const double h = params.dt;
     for (Index i = 0; i < nv; ++i)
         rhs_.row(i) = (solveMass_[i] * V.v[i] + h * V.m[i] * g).transpose() - h * sol_.row(i);
+    if (anyPlastic_)
+        for (Index i = 0; i < nv; ++i) rhs_.row(i) += h * plasticForce_[i].transpose();
     sol_ = solver_.solve(rhs_);
     for (Index i = 0; i < nv; ++i)
         if (!V.pinned[i]) V.v[i] = sol_.row(i).transpose();
+}
+
+// Fast projection (Goldenthal et al. 2007, "Efficient simulation of inextensible
+// cloth"): after the sub-steps, every edge still stretched is brought back to its rest
+// length by Newton steps on the constraints together, (J W Jᵀ) δλ = C, x −= W Jᵀ δλ.
+// One sparse solve reaches across the sheet, where a Gauss-Seidel pass moves a pull
+// one edge: near a clamp or under the tool's grip the sub-steps alone left 1-3 %
+// stretch. Compressed edges are left to the buckling cap of the sub-steps.
+void XpbdIntegrator::projectStretch(Sheet& sheet, double dt) {
+    auto& V = sheet.verts;
+    const Index nv = V.size();
+    for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
+        active_.clear();
+        for (std::size_t q = 0; q < stretch_.size(); ++q) {
+            const StretchConstraint& k = stretch_[q];
+            if (!(k.maxPull == std::numeric_limits<double>::infinity()) || w_[k.a] + w_[k.b] == 0.0)
+                continue;
+            const double len = (V.x[k.a] - V.x[k.b]).norm();
+            if (len > k.rest * (1.0 - kBuckledStrain)) active_.push_back(q);
+        }
+        if (active_.empty()) return;
+        double worst = 0.0;
+        for (std::size_t q : active_) {
+            const StretchConstraint& k = stretch_[q];
+            worst = std::max(worst, (V.x[k.a] - V.x[k.b]).norm() / k.rest - 1.0);
+        }
+        if (!(worst > kProjectedStretch)) return;
+        const Index na = static_cast<Index>(active_.size());
+        dir_.resize(active_.size());
+        Eigen::VectorXd c(na);
+        // Which active constraints meet at each vertex, with the sign of the vertex in
+        // each (+1 for a, -1 for b).
+        incidentStart_.assign(static_cast<std::size_t>(nv) + 1, 0);
+        for (std::size_t e = 0; e < active_.size(); ++e) {
+            const StretchConstraint& k = stretch_[active_[e]];
+            const Vec3 d = V.x[k.a] - V.x[k.b];
+            const double len = d.norm();
+            dir_[e] = d / len;
+            c[static_cast<Index>(e)] = len - k.rest;
+            ++incidentStart_[k.a + 1];
+            ++incidentStart_[k.b + 1];
+        }
+        for (Index i = 0; i < nv; ++i) incidentStart_[i + 1] += incidentStart_[i];
+        incident_.resize(incidentStart_[nv]);
+        std::vector<Index> fill(incidentStart_.begin(), incidentStart_.end() - 1);
+        for (std::size_t e = 0; e < active_.size(); ++e) {
+            const StretchConstraint& k = stretch_[active_[e]];
+            incident_[fill[k.a]++] = {static_cast<Index>(e), 1.0};
+            incident_[fill[k.b]++] = {static_cast<Index>(e), -1.0};
+        }
+        std::vector<Eigen::Triplet<double>> entries;
+        entries.reserve(8 * active_.size());
+        for (Index i = 0; i < nv; ++i) {
+            if (w_[i] == 0.0) continue;
+            for (Index p = incidentStart_[i]; p < incidentStart_[i + 1]; ++p)
+                for (Index r = incidentStart_[i]; r < incidentStart_[i + 1]; ++r) {
+                    const auto [e, se] = incident_[p];
+                    const auto [f, sf] = incident_[r];
+                    entries.emplace_back(e, f, w_[i] * se * sf * dir_[e].dot(dir_[f]));
+                }
+        }
+        // A triangle mesh has more edges than its vertices have free directions where
+        // pins hold it, so J W Jᵀ is singular there: a small diagonal term (a
+        // compliance) keeps the solve well posed.
+        for (std::size_t e = 0; e < active_.size(); ++e) {
+            const StretchConstraint& k = stretch_[active_[e]];
+            entries.emplace_back(static_cast<Index>(e), static_cast<Index>(e),
+                                 kProjectionCompliance * (w_[k.a] + w_[k.b]));
+        }
+        Eigen::SparseMatrix<double> a(na, na);
+        a.setFromTriplets(entries.begin(), entries.end());
+        projection_.compute(a);
+        if (projection_.info() != Eigen::Success) return;
+        const Eigen::VectorXd lambda = projection_.solve(c);
+        for (std::size_t e = 0; e < active_.size(); ++e) {
+            const StretchConstraint& k = stretch_[active_[e]];
+            const Vec3 move = dir_[e] * lambda[static_cast<Index>(e)];
+            V.x[k.a] -= w_[k.a] * move;
+            V.x[k.b] += w_[k.b] * move;
+            V.v[k.a] -= w_[k.a] * move / dt;
+            V.v[k.b] += w_[k.b] * move / dt;
+        }
+    }
 }
 
 bool XpbdIntegrator::mustWake(const Sheet& sheet) const {
@@ -397,7 +582,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         signature_ = signature;
         asleep_ = false;
         quietSteps_ = 0;
-    } else if (params.dt != factoredDt_ || params.bendingDamping != factoredDamping_) {
+    } else if (solveStep(params) != factoredDt_ || params.bendingDamping != factoredDamping_) {
         factor(sheet, params);
     }
     if (asleep_) {
@@ -437,23 +622,110 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // Where the tool and the desk hold the same vertex, the tool's friction, the larger
     // (μ_tool > μ_desk), decides the slide, and the desk only keeps it above itself.
     touched_.assign(static_cast<std::size_t>(nv), 0);
-    const auto collideSphere = [&](const Vec3& c, const Vec3& cPrev, bool withFriction) {
-        if (!sp.active) return;
+    // The tool touches the paper's triangles, not only its vertices: a sphere resting
+    // on the desk meets the sheet in a patch a few millimetres wide, smaller than a
+    // cell, and would otherwise slide over the paper between vertices without holding
+    // it. Triangles that can come within reach during this step are found once.
+    toolTriangles_.clear();
+    if (sp.active) {
+        const double travel = sp.velocity.norm() * params.dt;
+        const double near = sp.radius + kToolReach + travel + longestEdge_ + 0.01;
+        const double near2 = near * near;
+        for (Index t = 0; t < sheet.triangleCount(); ++t) {
+            const auto& tv = sheet.tris[t].v;
+            if ((V.x[tv[0]] - sp.center).squaredNorm() < near2 ||
+                (V.x[tv[1]] - sp.center).squaredNorm() < near2 ||
+                (V.x[tv[2]] - sp.center).squaredNorm() < near2)
+                toolTriangles_.push_back(t);
+        }
+    }
+    // The tool presses the paper onto the desk with params.toolForce and holds it there
+    // by friction, at most (μ_tool − μ_desk) times that force, shared by the triangles
+    // under it. Each
+    // held triangle is tied to the point of the tool where it was caught by a soft
+    // XPBD constraint (kGripCompliance): a hard, position-level grip transmitted any
+    // force at all, and pulled the paper between the tool and a held edge 20-50 %
+    // long; a grip applied only as sub-step friction moved nothing but the three light
+    // vertices it touched, and the tool slid over a sheet it pressed onto the desk.
+    if (!sp.active) grips_.clear();
+    const auto grip = [&](Index t, const Vec3& b, const Vec3& offset) {
+        for (const Grip& g : grips_)
+            if (g.triangle == t) return;
+        grips_.push_back({t, b, offset});
+    };
+    const auto pullWithTool = [&](const Vec3& c) {
+        if (grips_.empty()) return;
         const double reach = sp.radius + kToolReach;
-        for (Index i = 0; i < nv; ++i) {
-            if (w_[i] == 0.0) continue;
-            const Vec3 d = V.x[i] - c;
+        const double share = params.toolForce / static_cast<double>(grips_.size());
+        const double alpha = kGripCompliance / h2;
+        std::size_t kept = 0;
+        for (Grip g : grips_) {
+            const auto& tv = sheet.tris[g.triangle].v;
+            const Vec3 q = g.b[0] * V.x[tv[0]] + g.b[1] * V.x[tv[1]] + g.b[2] * V.x[tv[2]];
+            const Vec3 d = q - c;
+            if (!(d.squaredNorm() < reach * reach) || !(d.y() < -0.7 * d.norm())) continue;
+            grips_[kept++] = g;
+            const double wsum = w_[tv[0]] * g.b[0] * g.b[0] + w_[tv[1]] * g.b[1] * g.b[1] +
+                                w_[tv[2]] * g.b[2] * g.b[2];
+            Vec3 e = d - g.offset;
+            e.y() = 0.0; // across the desk; the tool presses along y
+            const double len = e.norm();
+            if (!(wsum > 0.0) || !(len > 0.0)) continue;
+            double lambda = len / (wsum + alpha);
+            // The desk under the paper holds it back by its own friction times the same
+            // force, so what is left to drag the sheet is the difference.
+            const double holds = mat.toolStaticFriction - mat.groundKineticFriction;
+            const double drags = mat.toolKineticFriction - mat.groundKineticFriction;
+            if (lambda > std::max(0.0, holds) * share * h2) {
+                // Sliding: kinetic friction, and the tool holds on where the paper is now.
+                lambda = std::min(lambda, std::max(0.0, drags) * share * h2);
+                grips_[kept - 1].offset = d - e * (1.0 - lambda * wsum / len);
+            }
+            const Vec3 step = e * (-lambda / len);
+            for (int k = 0; k < 3; ++k) V.x[tv[k]] += (w_[tv[k]] * g.b[k]) * step;
+        }
+        grips_.resize(kept);
+    };
+    const auto collideSphere = [&](const Vec3& c, const Vec3& cPrev, bool withFriction) {
+        const double reach = sp.radius + kToolReach;
+        for (Index t : toolTriangles_) {
+            const auto& tv = sheet.tris[t].v;
+            const double w0 = w_[tv[0]], w1 = w_[tv[1]], w2 = w_[tv[2]];
+            const Vec3 b = closestPointBarycentric(V.x[tv[0]], V.x[tv[1]], V.x[tv[2]], c);
+            const Vec3 q = b[0] * V.x[tv[0]] + b[1] * V.x[tv[1]] + b[2] * V.x[tv[2]];
+            const Vec3 d = q - c;
             const double dist2 = d.squaredNorm();
             if (!(dist2 < reach * reach)) continue;
+            const double wsum = w0 * b[0] * b[0] + w1 * b[1] * b[1] + w2 * b[2] * b[2];
+            if (!(wsum > 0.0)) continue;
             const double dist = std::sqrt(dist2);
             const Vec3 nrm = dist > 1e-12 ? Vec3(d / dist) : Vec3::UnitY();
-            const double push = reach - dist;
-            V.x[i] = c + reach * nrm;
-            touched_[i] = 1;
-            if (!withFriction) continue;
-            const Vec3 rel = (V.x[i] - xPrev_[i]) - (c - cPrev);
-            friction(V.x[i], rel - rel.dot(nrm) * nrm, push, mat.toolStaticFriction,
-                     mat.toolKineticFriction);
+            // The tool's hard surface is at its radius; its lower cap, which presses the
+            // paper onto the desk, also grips what lies within kToolReach below it (a
+            // fingertip's soft skin; the step keeps the sphere above the desk).
+            if (nrm.y() < -0.7 && withFriction) grip(t, b, q - c);
+            if (!(dist < sp.radius)) continue;
+            const double push = sp.radius - dist;
+            Vec3 move = push * nrm;
+            if (withFriction) {
+                const Vec3 qPrev =
+                    b[0] * xPrev_[tv[0]] + b[1] * xPrev_[tv[1]] + b[2] * xPrev_[tv[2]];
+                const Vec3 rel = (q - qPrev) - (c - cPrev);
+                const Vec3 slip = rel - rel.dot(nrm) * nrm;
+                const double len = slip.norm();
+                const double mus = mat.toolStaticFriction, muk = mat.toolKineticFriction;
+                if (len <= mus * push)
+                    move -= slip;
+                else if (len > 0.0)
+                    move -= slip * std::min(1.0, muk * push / len);
+            }
+            // Moving each vertex by w_i b_i / Σ w b² of the correction moves the contact
+            // point by exactly the correction.
+            for (int k = 0; k < 3; ++k) {
+                if (w_[tv[k]] == 0.0 || b[k] == 0.0) continue;
+                V.x[tv[k]] += (w_[tv[k]] * b[k] / wsum) * move;
+                touched_[tv[k]] = 1;
+            }
         }
     };
     const auto collideGround = [&](bool withFriction) {
@@ -470,8 +742,10 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         }
     };
 
-    bendImplicitly(sheet, params, g);
+    yieldPlastically(sheet, mat);
     for (int sub = 0; sub < n; ++sub) {
+        if (sub % kSubstepsPerBendingSolve == 0)
+            bendImplicitly(sheet, g, h * std::min(kSubstepsPerBendingSolve, n - sub));
         for (Index i = 0; i < nv; ++i) {
             xPrev_[i] = V.x[i];
             V.x[i] += h * V.v[i];
@@ -484,6 +758,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         // that nothing ends a sub-step inside either.
         std::fill(touched_.begin(), touched_.end(), std::uint8_t{0});
         collideSphere(c, cPrev, true);
+        pullWithTool(c);
         collideGround(true);
         // Forward then backward, so that a pull travels across the sheet both ways
         // within one sub-step.
@@ -498,8 +773,8 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
                 const Vec3 d = V.x[k.a] - V.x[k.b];
                 const double len = d.norm();
                 if (!(len > 1e-12)) continue;
-                const double dl =
-                    std::min(-(len - k.rest) / (wsum + k.compliance * invH2), k.maxPush * h2);
+                const double dl = std::clamp(-(len - k.rest) / (wsum + k.compliance * invH2),
+                                             -k.maxPull * h2, k.maxPush * h2);
                 const Vec3 u = d * (dl / len);
                 V.x[k.a] += wa * u;
                 V.x[k.b] -= wb * u;
@@ -519,6 +794,10 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         for (Index i = 0; i < nv; ++i)
             if (w_[i] != 0.0) V.v[i] = (V.x[i] - xPrev_[i]) / h;
     }
+
+    projectStretch(sheet, params.dt);
+    collideSphere(sp.center, sp.center, false);
+    collideGround(false);
 
     if (shouldSleep(sheet)) {
         if (++quietSteps_ >= kStepsBeforeSleep) {

@@ -134,6 +134,7 @@ class TestSheetFile : public QObject {
         w.params.integrator = "xpbd";
         w.params.substeps = 12;
         w.params.bendingDamping = 0.02;
+        w.params.toolForce = 3.5;
         Material card;
         QVERIFY(materialPreset("card", card));
         setMaterial(w, card);
@@ -142,17 +143,29 @@ class TestSheetFile : public QObject {
         QVERIFY(l.world->params.material == card);
         QCOMPARE(l.world->params.substeps, 12);
         QCOMPARE(l.world->params.bendingDamping, 0.02);
+        QCOMPARE(l.world->params.toolForce, 3.5);
         QVERIFY(l.world->sheet.verts.m == w.sheet.verts.m);
 
         QCborMap root = QCborValue::fromCbor(encodeWorld(*makeScene("press"))).toMap();
         QCborMap params = root[QLatin1String("params")].toMap();
-        for (const char* key : {"material", "substeps", "bendingDamping"})
+        for (const char* key : {"material", "substeps", "bendingDamping", "toolForce"})
             params.remove(QLatin1String(key));
         root[QLatin1String("params")] = params;
         const WorldLoad old = decodeWorld(QCborValue(root).toCbor());
         QVERIFY2(old.world, qPrintable(old.error));
         QVERIFY(old.world->params.material == Material{});
         QCOMPARE(old.world->params.substeps, SimParams{}.substeps);
+        QCOMPARE(old.world->params.toolForce, SimParams{}.toolForce);
+        // A material written before plastic bending takes its preset's yield.
+        QCborMap cardRoot = QCborValue::fromCbor(encodeWorld(w)).toMap();
+        QCborMap cardParams = cardRoot[QLatin1String("params")].toMap();
+        QCborMap cardMaterial = cardParams[QLatin1String("material")].toMap();
+        cardMaterial.remove(QLatin1String("yieldCurvature"));
+        cardParams[QLatin1String("material")] = cardMaterial;
+        cardRoot[QLatin1String("params")] = cardParams;
+        const WorldLoad oldCard = decodeWorld(QCborValue(cardRoot).toCbor());
+        QVERIFY2(oldCard.world, qPrintable(oldCard.error));
+        QCOMPARE(oldCard.world->params.material.yieldCurvature, card.yieldCurvature);
     }
 
     void recoveryWorksOnALoadedSheet() {
