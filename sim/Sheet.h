@@ -1,5 +1,6 @@
 #pragma once
 
+#include "PaperState.h"
 #include "Types.h"
 
 #include <array>
@@ -72,6 +73,7 @@ struct Sheet {
     Springs springs;
     std::vector<Triangle> tris;
     std::vector<DamageEvent> events;
+    PaperState paper;
     double density = 0.08; // kg/m^2 (80 g/m^2 paper)
 
     Index triangleCount() const { return static_cast<Index>(tris.size()); }

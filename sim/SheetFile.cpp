@@ -72,6 +72,8 @@ class Unpacker {
 };
 
 constexpr qint64 kEventRecordBytes = 4 + 4 + 8 + 4 + 4 + 16 + 16 + 2 * 24 + 4 * 24 + 16;
+constexpr qint64 kPlasticRecordBytes = 5 * 4 + 24;
+constexpr qint64 kGripRecordBytes = 4 + 2 * 24;
 
 void putTriangle(QByteArray& out, const Triangle& t) {
     for (Index v : t.v) putI32(out, v);
@@ -192,6 +194,22 @@ QCborMap sheetToCbor(const Sheet& s) {
     o[QLatin1String("triangleVertices")] = tv;
     o[QLatin1String("triangleEdges")] = te;
     o[QLatin1String("events")] = packEvents(s.events);
+    // The xpbd integrator's state (optional; absent in older files: none).
+    QByteArray plastic, grips;
+    for (const PaperState::PlasticBend& p : s.paper.plastic) {
+        for (Index v : p.vertices) putI32(plastic, v);
+        putVec3(plastic, p.rest);
+    }
+    for (const PaperState::ToolGrip& g : s.paper.grips) {
+        putI32(grips, g.triangle);
+        putVec3(grips, g.barycentric);
+        putVec3(grips, g.offset);
+    }
+    o[QLatin1String("plasticCount")] = static_cast<qint64>(s.paper.plastic.size());
+    o[QLatin1String("plastic")] = plastic;
+    o[QLatin1String("gripCount")] = static_cast<qint64>(s.paper.grips.size());
+    o[QLatin1String("grips")] = grips;
+    o[QLatin1String("quietSteps")] = s.paper.quietSteps;
     return o;
 }
 
@@ -403,6 +421,24 @@ Sheet sheetFromCbor(const QCborMap& m) {
         ev.massTaken[0] = uev.f64();
         ev.massTaken[1] = uev.f64();
     }
+    if (m.contains(QLatin1String("plasticCount"))) {
+        const qint64 np = integerAt(m, "plasticCount", w, 0, kMaxFileSprings);
+        Unpacker u(bytesAt(m, "plastic", w, np, kPlasticRecordBytes));
+        s.paper.plastic.resize(static_cast<std::size_t>(np));
+        for (PaperState::PlasticBend& p : s.paper.plastic) {
+            for (Index& v : p.vertices) v = u.i32();
+            p.rest = u.vec3();
+        }
+        const qint64 ng = integerAt(m, "gripCount", w, 0, kMaxFileTriangles);
+        Unpacker ug(bytesAt(m, "grips", w, ng, kGripRecordBytes));
+        s.paper.grips.resize(static_cast<std::size_t>(ng));
+        for (PaperState::ToolGrip& g : s.paper.grips) {
+            g.triangle = ug.i32();
+            g.barycentric = ug.vec3();
+            g.offset = ug.vec3();
+        }
+        s.paper.quietSteps = static_cast<int>(integerAt(m, "quietSteps", w, 0, 1'000'000'000));
+    }
     const std::string problem = validateSheet(s);
     if (!problem.empty()) fail(QStringLiteral("sheet: %1").arg(QString::fromStdString(problem)));
     return s;
@@ -574,7 +610,12 @@ const CborBounds& sheetFileBounds() {
                                 "springEvent",
                                 "triangleVertices",
                                 "triangleEdges",
-                                "events"})
+                                "events",
+                                "plasticCount",
+                                "plastic",
+                                "gripCount",
+                                "grips",
+                                "quietSteps"})
             b.knownKeys.insert(QString::fromLatin1(key));
         // The deepest path is root → script → pins → group → value; at most 1000 pin
         // groups of three entries make the most values a valid file holds.

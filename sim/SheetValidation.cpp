@@ -155,6 +155,20 @@ std::string validateSheet(const Sheet& sheet) {
         if (!(std::isfinite(ev.massTaken[0]) && std::isfinite(ev.massTaken[1])))
             return at + " has a non-finite mass";
     }
+    for (const PaperState::PlasticBend& p : sheet.paper.plastic) {
+        int used = 0;
+        for (Index v : p.vertices) {
+            if (v == kNone) continue;
+            if (v < 0 || v >= nvi) return "a plastic bend names a vertex that does not exist";
+            ++used;
+        }
+        if (used < 3 || !p.rest.allFinite()) return "a plastic bend is malformed";
+    }
+    for (const PaperState::ToolGrip& g : sheet.paper.grips)
+        if (g.triangle < 0 || g.triangle >= nt || !g.barycentric.allFinite() ||
+            !g.offset.allFinite())
+            return "a tool grip is malformed";
+    if (sheet.paper.quietSteps < 0) return "negative quiet steps";
     return {};
 }
 

@@ -339,10 +339,10 @@ void XpbdIntegrator::rebuild(const Sheet& sheet, const SimParams& params) {
                                     ? 0.0
                                     : std::numeric_limits<double>::infinity()});
     colourStretchConstraints(sheet.verts.size());
-    // A fold the paper has yielded into stays when the mesh changes elsewhere.
+    // A fold the paper has yielded into stays when the mesh changes elsewhere, and
+    // comes back from a file: the rest values are kept with the sheet, by vertices.
     std::map<std::array<Index, 5>, Vec3> kept;
-    for (std::size_t q = 0; q < stencils_.size() && q < plastic_.size(); ++q)
-        if (plastic_[q] != Vec3::Zero()) kept[stencils_[q].v] = plastic_[q];
+    for (const PaperState::PlasticBend& p : sheet.paper.plastic) kept[p.vertices] = p.rest;
     stencils_ = bendingStencils(sheet, m);
     plastic_.assign(stencils_.size(), Vec3::Zero());
     if (!kept.empty())
@@ -367,7 +367,6 @@ void XpbdIntegrator::rebuild(const Sheet& sheet, const SimParams& params) {
             tethers_.push_back(t);
         }
     builtFor_ = m;
-    grips_.clear(); // triangles are renumbered
     factor(sheet, params);
 }
 
@@ -406,10 +405,11 @@ void XpbdIntegrator::factor(const Sheet& sheet, const SimParams& params) {
 // normal alone left the in-plane part of a sharp fold elastic, and the sheet fought
 // its own pleats for seconds after the tool had left. (Σ k = 0, so r exerts no net
 // force; a yielded region turned as a whole feels at most the yield moment.)
-void XpbdIntegrator::yieldPlastically(const Sheet& sheet, const Material& m) {
+void XpbdIntegrator::yieldPlastically(Sheet& sheet, const Material& m) {
     const auto& V = sheet.verts;
     plasticForce_.assign(static_cast<std::size_t>(V.size()), Vec3::Zero());
     anyPlastic_ = false;
+    bool yielded = false;
     for (std::size_t q = 0; q < stencils_.size(); ++q) {
         const Stencil& st = stencils_[q];
         Vec3 y = Vec3::Zero();
@@ -418,12 +418,20 @@ void XpbdIntegrator::yieldPlastically(const Sheet& sheet, const Material& m) {
         const Vec3 elastic = y - r;
         const double yield = m.yieldCurvature * st.unit;
         const double size2 = elastic.squaredNorm();
-        if (size2 > yield * yield) r = y - elastic * (yield / std::sqrt(size2));
+        if (size2 > yield * yield) {
+            r = y - elastic * (yield / std::sqrt(size2));
+            yielded = true;
+        }
         if (r == Vec3::Zero()) continue;
         anyPlastic_ = true;
         const Vec3 f = r / st.compliance;
         for (int k = 0; k < st.count; ++k) plasticForce_[st.v[k]] += st.k[k] * f;
     }
+    if (!yielded) return;
+    auto& kept = sheet.paper.plastic;
+    kept.clear();
+    for (std::size_t q = 0; q < stencils_.size(); ++q)
+        if (plastic_[q] != Vec3::Zero()) kept.push_back({stencils_[q].v, plastic_[q]});
 }
 
 // One sub-step of backward Euler for gravity and the bending force f = -Q x (plus the
@@ -578,13 +586,19 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
                                                 pins,
                                                 pinSum};
     if (signature != signature_ || !(builtFor_ == params.material)) {
+        // A sheet just handed over (a new integrator, a loaded file) keeps its sleep
+        // and its grips; a changed mesh or paper wakes it and lets go.
+        const bool handedOver = signature_[0] < 0;
         rebuild(sheet, params);
         signature_ = signature;
-        asleep_ = false;
-        quietSteps_ = 0;
+        if (!handedOver) {
+            sheet.paper.quietSteps = 0;
+            sheet.paper.grips.clear(); // triangles are renumbered
+        }
     } else if (solveStep(params) != factoredDt_ || params.bendingDamping != factoredDamping_) {
         factor(sheet, params);
     }
+    asleep_ = sheet.paper.quietSteps >= kStepsBeforeSleep;
     if (asleep_) {
         if (!mustWake(sheet)) {
             for (Index i = 0; i < nv; ++i)
@@ -592,7 +606,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             return;
         }
         asleep_ = false;
-        quietSteps_ = 0;
+        sheet.paper.quietSteps = 0;
     }
 
     const int n = std::max(1, params.substeps);
@@ -647,26 +661,30 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // force at all, and pulled the paper between the tool and a held edge 20-50 %
     // long; a grip applied only as sub-step friction moved nothing but the three light
     // vertices it touched, and the tool slid over a sheet it pressed onto the desk.
-    if (!sp.active) grips_.clear();
+    auto& grips = sheet.paper.grips;
+    if (!sp.active) grips.clear();
     const auto grip = [&](Index t, const Vec3& b, const Vec3& offset) {
-        for (const Grip& g : grips_)
+        for (const PaperState::ToolGrip& g : grips)
             if (g.triangle == t) return;
-        grips_.push_back({t, b, offset});
+        grips.push_back({t, b, offset});
     };
     const auto pullWithTool = [&](const Vec3& c) {
-        if (grips_.empty()) return;
+        if (grips.empty()) return;
         const double reach = sp.radius + kToolReach;
-        const double share = params.toolForce / static_cast<double>(grips_.size());
+        const double share = params.toolForce / static_cast<double>(grips.size());
         const double alpha = kGripCompliance / h2;
         std::size_t kept = 0;
-        for (Grip g : grips_) {
+        for (std::size_t held = 0; held < grips.size(); ++held) {
+            const PaperState::ToolGrip g = grips[held]; // a copy: grips is compacted in place
             const auto& tv = sheet.tris[g.triangle].v;
-            const Vec3 q = g.b[0] * V.x[tv[0]] + g.b[1] * V.x[tv[1]] + g.b[2] * V.x[tv[2]];
+            const Vec3 q = g.barycentric[0] * V.x[tv[0]] + g.barycentric[1] * V.x[tv[1]] +
+                           g.barycentric[2] * V.x[tv[2]];
             const Vec3 d = q - c;
             if (!(d.squaredNorm() < reach * reach) || !(d.y() < -0.7 * d.norm())) continue;
-            grips_[kept++] = g;
-            const double wsum = w_[tv[0]] * g.b[0] * g.b[0] + w_[tv[1]] * g.b[1] * g.b[1] +
-                                w_[tv[2]] * g.b[2] * g.b[2];
+            grips[kept++] = g;
+            const double wsum = w_[tv[0]] * g.barycentric[0] * g.barycentric[0] +
+                                w_[tv[1]] * g.barycentric[1] * g.barycentric[1] +
+                                w_[tv[2]] * g.barycentric[2] * g.barycentric[2];
             Vec3 e = d - g.offset;
             e.y() = 0.0; // across the desk; the tool presses along y
             const double len = e.norm();
@@ -679,12 +697,12 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             if (lambda > std::max(0.0, holds) * share * h2) {
                 // Sliding: kinetic friction, and the tool holds on where the paper is now.
                 lambda = std::min(lambda, std::max(0.0, drags) * share * h2);
-                grips_[kept - 1].offset = d - e * (1.0 - lambda * wsum / len);
+                grips[kept - 1].offset = d - e * (1.0 - lambda * wsum / len);
             }
             const Vec3 step = e * (-lambda / len);
-            for (int k = 0; k < 3; ++k) V.x[tv[k]] += (w_[tv[k]] * g.b[k]) * step;
+            for (int k = 0; k < 3; ++k) V.x[tv[k]] += (w_[tv[k]] * g.barycentric[k]) * step;
         }
-        grips_.resize(kept);
+        grips.resize(kept);
     };
     const auto collideSphere = [&](const Vec3& c, const Vec3& cPrev, bool withFriction) {
         const double reach = sp.radius + kToolReach;
@@ -800,13 +818,13 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     collideGround(false);
 
     if (shouldSleep(sheet)) {
-        if (++quietSteps_ >= kStepsBeforeSleep) {
+        if (++sheet.paper.quietSteps >= kStepsBeforeSleep) {
             asleep_ = true;
             for (Index i = 0; i < nv; ++i)
                 if (!V.pinned[i]) V.v[i] = Vec3::Zero();
         }
     } else {
-        quietSteps_ = 0;
+        sheet.paper.quietSteps = 0;
     }
 }
 

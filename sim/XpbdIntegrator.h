@@ -90,7 +90,7 @@ class XpbdIntegrator final : public Integrator {
     void factor(const Sheet& sheet, const SimParams& params);
     void colourStretchConstraints(Index vertices);
     void bendImplicitly(Sheet& sheet, const Vec3& g, double h);
-    void yieldPlastically(const Sheet& sheet, const Material& m);
+    void yieldPlastically(Sheet& sheet, const Material& m);
     void projectStretch(Sheet& sheet, double dt);
     bool shouldSleep(const Sheet& sheet) const;
     bool mustWake(const Sheet& sheet) const;
@@ -127,12 +127,6 @@ class XpbdIntegrator final : public Integrator {
     std::vector<double> w_;             // inverse masses, 0 for pinned vertices
     std::vector<std::uint8_t> touched_; // touched by the tool in this sub-step
     std::vector<Index> toolTriangles_;  // triangles the tool may reach in this step
-    struct Grip {
-        Index triangle;
-        Vec3 b;      // barycentric coordinates of the held point
-        Vec3 offset; // where on the tool it is held, from the tool's centre
-    };
-    std::vector<Grip> grips_;
     // Fast projection: the stretched constraints, their directions, and which of them
     // meet at each vertex.
     std::vector<std::size_t> active_;
@@ -141,7 +135,6 @@ class XpbdIntegrator final : public Integrator {
     std::vector<std::pair<Index, double>> incident_;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> projection_;
     double longestEdge_ = 0.0; // rest length, m
-    int quietSteps_ = 0;
     bool asleep_ = false;
 };
 

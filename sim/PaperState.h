@@ -1,0 +1,35 @@
+#pragma once
+
+#include "Types.h"
+
+#include <array>
+#include <vector>
+
+namespace pf {
+
+// What the "xpbd" integrator carries from one step to the next beyond positions and
+// velocities. It lives with the sheet so that a saved sheet resumes exactly and keeps
+// its folds, and so that undo gives back the state the user saw.
+struct PaperState {
+    // Plastic bending: the rest value of a bending stencil's Σ k x, by the stencil's
+    // vertices (unused slots kNone), in stencil order.
+    struct PlasticBend {
+        std::array<Index, 5> vertices{};
+        Vec3 rest = Vec3::Zero();
+        friend bool operator==(const PlasticBend&, const PlasticBend&) = default;
+    };
+    // The tool's hold on a triangle it presses onto the desk.
+    struct ToolGrip {
+        Index triangle = kNone;
+        Vec3 barycentric = Vec3::Zero(); // the held point
+        Vec3 offset = Vec3::Zero();      // where on the tool it is held, from its centre
+        friend bool operator==(const ToolGrip&, const ToolGrip&) = default;
+    };
+    std::vector<PlasticBend> plastic;
+    std::vector<ToolGrip> grips;
+    // Steps in a row in which the sheet was quiet; it sleeps from kStepsBeforeSleep on.
+    int quietSteps = 0;
+    friend bool operator==(const PaperState&, const PaperState&) = default;
+};
+
+} // namespace pf
