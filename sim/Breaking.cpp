@@ -71,6 +71,7 @@ Index breakEdge(Sheet& sheet, Index spring, const std::vector<Vec3>& normals, do
     const Index l = sheet.oppositeVertex(t2, i, j);
 
     DamageEvent ev;
+    sheet.paper.meshChanged();
     ev.kind = EventKind::Break;
     ev.step = step;
     ev.edge = spring;
@@ -162,6 +163,7 @@ bool isOneOf(Index id, const std::array<Index, 4>& ids) {
 
 bool recoverEvent(Sheet& sheet, Index event) {
     if (!canRecover(sheet, event)) return false;
+    sheet.paper.meshChanged();
     if (sheet.events[event].kind == EventKind::Hinge) {
         recoverHinge(sheet, event);
         return true;

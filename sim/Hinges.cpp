@@ -20,6 +20,7 @@ int runHingePass(Sheet& sheet, const SimParams& params, std::int64_t step) {
         const double rest2 = (V.X[r] - V.X[l]).squaredNorm();
         if (!(d2 < threshold2 * rest2)) continue;
 
+        sheet.paper.meshChanged();
         const Index hinge = sheet.addSpring(r, l, std::sqrt(d2), SpringKind::Hinge, false);
         DamageEvent ev;
         ev.kind = EventKind::Hinge;

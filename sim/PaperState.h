@@ -30,6 +30,14 @@ struct PaperState {
     // Steps in a row in which the sheet was quiet; it sleeps from kStepsBeforeSleep on.
     int quietSteps = 0;
     friend bool operator==(const PaperState&, const PaperState&) = default;
+
+    // The mesh changed under the sheet (a break, a hinge, a recovery) or its paper did:
+    // the tool lets go (its triangles are renumbered) and the sheet wakes. Done where
+    // the change is made, so that a sheet saved right after it resumes exactly.
+    void meshChanged() {
+        grips.clear();
+        quietSteps = 0;
+    }
 };
 
 } // namespace pf

@@ -100,6 +100,7 @@ void setMaterial(World& world, const Material& material) {
     for (DamageEvent& ev : sheet.events)
         for (double& taken : ev.massTaken) taken *= scale;
     sheet.density = material.arealDensity;
+    if (!(world.params.material == material)) sheet.paper.meshChanged();
     world.params.material = material;
 }
 

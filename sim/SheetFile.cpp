@@ -422,14 +422,15 @@ Sheet sheetFromCbor(const QCborMap& m) {
         ev.massTaken[1] = uev.f64();
     }
     if (m.contains(QLatin1String("plasticCount"))) {
-        const qint64 np = integerAt(m, "plasticCount", w, 0, kMaxFileSprings);
+        // A stencil per grid direction and one per edge at most.
+        const qint64 np = integerAt(m, "plasticCount", w, 0, 4 * nv + ns);
         Unpacker u(bytesAt(m, "plastic", w, np, kPlasticRecordBytes));
         s.paper.plastic.resize(static_cast<std::size_t>(np));
         for (PaperState::PlasticBend& p : s.paper.plastic) {
             for (Index& v : p.vertices) v = u.i32();
             p.rest = u.vec3();
         }
-        const qint64 ng = integerAt(m, "gripCount", w, 0, kMaxFileTriangles);
+        const qint64 ng = integerAt(m, "gripCount", w, 0, nt);
         Unpacker ug(bytesAt(m, "grips", w, ng, kGripRecordBytes));
         s.paper.grips.resize(static_cast<std::size_t>(ng));
         for (PaperState::ToolGrip& g : s.paper.grips) {

@@ -157,17 +157,28 @@ std::string validateSheet(const Sheet& sheet) {
     }
     for (const PaperState::PlasticBend& p : sheet.paper.plastic) {
         int used = 0;
-        for (Index v : p.vertices) {
+        for (std::size_t slot = 0; slot < p.vertices.size(); ++slot) {
+            const Index v = p.vertices[slot];
             if (v == kNone) continue;
             if (v < 0 || v >= nvi) return "a plastic bend names a vertex that does not exist";
+            if (used != static_cast<int>(slot))
+                return "a plastic bend has a gap among its vertices";
             ++used;
         }
+        for (int a = 0; a < used; ++a)
+            for (int b = a + 1; b < used; ++b)
+                if (p.vertices[a] == p.vertices[b]) return "a plastic bend repeats a vertex";
         if (used < 3 || !p.rest.allFinite()) return "a plastic bend is malformed";
     }
-    for (const PaperState::ToolGrip& g : sheet.paper.grips)
-        if (g.triangle < 0 || g.triangle >= nt || !g.barycentric.allFinite() ||
-            !g.offset.allFinite())
+    std::vector<std::uint8_t> gripped(static_cast<std::size_t>(nt), 0);
+    for (const PaperState::ToolGrip& g : sheet.paper.grips) {
+        if (g.triangle < 0 || g.triangle >= nt || gripped[g.triangle]++)
+            return "a tool grip names a missing or repeated triangle";
+        const Vec3& b = g.barycentric;
+        if (!b.allFinite() || b.minCoeff() < -1e-9 || std::abs(b.sum() - 1.0) > 1e-6 ||
+            !g.offset.allFinite() || g.offset.norm() > 100.0)
             return "a tool grip is malformed";
+    }
     if (sheet.paper.quietSteps < 0) return "negative quiet steps";
     return {};
 }

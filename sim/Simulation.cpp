@@ -65,8 +65,12 @@ void keepOutOfContacts(World& w, Index firstVertex) {
 StepStatus Simulation::step() {
     World& w = world_;
     SimParams& p = w.params;
-    if (p.integrator != integratorName_ && !setIntegrator(p.integrator))
-        p.integrator = integratorName_;
+    if (p.integrator != integratorName_) {
+        if (setIntegrator(p.integrator))
+            w.sheet.paper.meshChanged(); // another integrator moved the sheet meanwhile
+        else
+            p.integrator = integratorName_;
+    }
     Sheet& sheet = w.sheet;
     lastBreaks_ = lastHinges_ = 0;
 
@@ -77,6 +81,7 @@ StepStatus Simulation::step() {
 
     savedX_ = sheet.verts.x;
     savedV_ = sheet.verts.v;
+    savedPaper_ = sheet.paper;
     if (integrator_->resolvesContacts()) {
         integrator_->setContacts({w.sphere, w.groundEnabled, w.groundHeight});
         integrator_->advance(sheet, p);
@@ -92,6 +97,8 @@ StepStatus Simulation::step() {
     if (!stateIsSane(sheet.verts)) {
         sheet.verts.x = savedX_;
         sheet.verts.v = savedV_;
+        sheet.paper = savedPaper_;
+        setIntegrator(integratorName_); // a fresh one: nothing of the failed step stays
         return StepStatus::Diverged;
     }
 

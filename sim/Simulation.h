@@ -47,6 +47,7 @@ class Simulation {
     std::string integratorName_;
     BreakScratch breakScratch_;
     std::vector<Vec3> savedX_, savedV_;
+    PaperState savedPaper_;
     int lastBreaks_ = 0;
     int lastHinges_ = 0;
 };

@@ -1,5 +1,7 @@
 #include "TopologyEdit.h"
 
+#include <algorithm>
+
 namespace pf {
 
 namespace {
@@ -73,6 +75,13 @@ void removeTriangleAt(Sheet& sheet, Index t) {
 void removeVertexAt(Sheet& sheet, Index v) {
     auto& V = sheet.verts;
     const Index last = V.size() - 1;
+    // Plastic folds around the removed vertex go with it; the others follow the rename.
+    auto& plastic = sheet.paper.plastic;
+    std::erase_if(plastic, [v](const PaperState::PlasticBend& p) {
+        return std::find(p.vertices.begin(), p.vertices.end(), v) != p.vertices.end();
+    });
+    for (PaperState::PlasticBend& p : plastic)
+        for (Index& id : p.vertices) rename(id, last, v);
     if (v != last) {
         auto& S = sheet.springs;
         for (Index s = 0; s < S.size(); ++s) {

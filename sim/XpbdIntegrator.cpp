@@ -293,7 +293,7 @@ void XpbdIntegrator::colourStretchConstraints(Index vertices) {
     stretch_.swap(sorted);
 }
 
-void XpbdIntegrator::rebuild(const Sheet& sheet, const SimParams& params) {
+void XpbdIntegrator::rebuild(Sheet& sheet, const SimParams& params) {
     const auto& S = sheet.springs;
     const Material& m = params.material;
     const std::vector<double> k = stretchStiffness(sheet, m);
@@ -345,9 +345,13 @@ void XpbdIntegrator::rebuild(const Sheet& sheet, const SimParams& params) {
     for (const PaperState::PlasticBend& p : sheet.paper.plastic) kept[p.vertices] = p.rest;
     stencils_ = bendingStencils(sheet, m);
     plastic_.assign(stencils_.size(), Vec3::Zero());
+    sheet.paper.plastic.clear();
     if (!kept.empty())
         for (std::size_t q = 0; q < stencils_.size(); ++q)
-            if (auto it = kept.find(stencils_[q].v); it != kept.end()) plastic_[q] = it->second;
+            if (auto it = kept.find(stencils_[q].v); it != kept.end()) {
+                plastic_[q] = it->second;
+                sheet.paper.plastic.push_back({stencils_[q].v, it->second});
+            }
     tethers_.clear();
     const auto& V = sheet.verts;
     std::vector<Index> pins;
@@ -434,14 +438,14 @@ void XpbdIntegrator::yieldPlastically(Sheet& sheet, const Material& m) {
         if (plastic_[q] != Vec3::Zero()) kept.push_back({stencils_[q].v, plastic_[q]});
 }
 
-// One sub-step of backward Euler for gravity and the bending force f = -Q x (plus the
-// plastic rest), with h the sub-step: (M + (h² + βh) Q) v' = M v + h M g - h Q x.
-// It runs in every sub-step, before the stretch pass, so that bending and stretch meet
-// as forces in small steps. Solved once per step instead, bending that inextensible
-// paper could not follow (a pleat pressed against the desk) came back each step as a
-// velocity kick of up to 0.5 m/s that the sub-steps undid: the sheet never came to
-// rest and kept 1-3 % stretch. Gravity is inside the same solve: added separately, the
-// velocity it left met the damping term and a clamped strip sank by 0.32 mm.
+// Backward Euler for gravity and the bending force f = -Q x (plus the plastic rest) over
+// h, kSubstepsPerBendingSolve sub-steps: (M + (h² + βh) Q) v' = M v + h M g - h Q x.
+// It runs before the stretch pass of the first of those sub-steps, so that bending and
+// stretch meet as forces in small steps (kSubstepsPerBendingSolve says why). The last
+// group of a step whose sub-steps are not a multiple of it is shorter: h is then
+// smaller than the factored matrix's, which only damps that group's bending a little.
+// Gravity is inside the same solve: added separately, the velocity it left met the
+// damping term and a clamped strip sank by 0.32 mm.
 void XpbdIntegrator::bendImplicitly(Sheet& sheet, const Vec3& g, double h) {
     auto& V = sheet.verts;
     const Index nv = V.size();
@@ -585,16 +589,11 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
                                                 active,
                                                 pins,
                                                 pinSum};
+    // A changed mesh or paper has already let the tool go and woken the sheet
+    // (PaperState::meshChanged, where the change was made).
     if (signature != signature_ || !(builtFor_ == params.material)) {
-        // A sheet just handed over (a new integrator, a loaded file) keeps its sleep
-        // and its grips; a changed mesh or paper wakes it and lets go.
-        const bool handedOver = signature_[0] < 0;
         rebuild(sheet, params);
         signature_ = signature;
-        if (!handedOver) {
-            sheet.paper.quietSteps = 0;
-            sheet.paper.grips.clear(); // triangles are renumbered
-        }
     } else if (solveStep(params) != factoredDt_ || params.bendingDamping != factoredDamping_) {
         factor(sheet, params);
     }
@@ -669,19 +668,27 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         grips.push_back({t, b, offset});
     };
     const auto pullWithTool = [&](const Vec3& c) {
-        if (grips.empty()) return;
         const double reach = sp.radius + kToolReach;
+        const auto pointOf = [&](const PaperState::ToolGrip& g) {
+            const auto& tv = sheet.tris[g.triangle].v;
+            return Vec3(g.barycentric[0] * V.x[tv[0]] + g.barycentric[1] * V.x[tv[1]] +
+                        g.barycentric[2] * V.x[tv[2]]);
+        };
+        // The tool lets go of what has left its lower cap.
+        std::erase_if(grips, [&](const PaperState::ToolGrip& g) {
+            const Vec3 d = pointOf(g) - c;
+            return !(d.squaredNorm() < reach * reach) || !(d.y() < -0.7 * d.norm());
+        });
+        if (grips.empty()) return;
         const double share = params.toolForce / static_cast<double>(grips.size());
         const double alpha = kGripCompliance / h2;
-        std::size_t kept = 0;
-        for (std::size_t held = 0; held < grips.size(); ++held) {
-            const PaperState::ToolGrip g = grips[held]; // a copy: grips is compacted in place
+        // The desk under the paper holds it back by its own friction times the same
+        // force, so what is left to drag the sheet is the difference.
+        const double holds = std::max(0.0, mat.toolStaticFriction - mat.groundKineticFriction);
+        const double drags = std::max(0.0, mat.toolKineticFriction - mat.groundKineticFriction);
+        for (PaperState::ToolGrip& g : grips) {
             const auto& tv = sheet.tris[g.triangle].v;
-            const Vec3 q = g.barycentric[0] * V.x[tv[0]] + g.barycentric[1] * V.x[tv[1]] +
-                           g.barycentric[2] * V.x[tv[2]];
-            const Vec3 d = q - c;
-            if (!(d.squaredNorm() < reach * reach) || !(d.y() < -0.7 * d.norm())) continue;
-            grips[kept++] = g;
+            const Vec3 d = pointOf(g) - c;
             const double wsum = w_[tv[0]] * g.barycentric[0] * g.barycentric[0] +
                                 w_[tv[1]] * g.barycentric[1] * g.barycentric[1] +
                                 w_[tv[2]] * g.barycentric[2] * g.barycentric[2];
@@ -690,19 +697,15 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             const double len = e.norm();
             if (!(wsum > 0.0) || !(len > 0.0)) continue;
             double lambda = len / (wsum + alpha);
-            // The desk under the paper holds it back by its own friction times the same
-            // force, so what is left to drag the sheet is the difference.
-            const double holds = mat.toolStaticFriction - mat.groundKineticFriction;
-            const double drags = mat.toolKineticFriction - mat.groundKineticFriction;
-            if (lambda > std::max(0.0, holds) * share * h2) {
-                // Sliding: kinetic friction, and the tool holds on where the paper is now.
-                lambda = std::min(lambda, std::max(0.0, drags) * share * h2);
-                grips[kept - 1].offset = d - e * (1.0 - lambda * wsum / len);
+            if (lambda > holds * share * h2) {
+                // Sliding: kinetic friction, and the tool holds on where the paper will
+                // be after this correction, d − e λ wsum / len.
+                lambda = std::min(lambda, drags * share * h2);
+                g.offset = d - e * (lambda * wsum / len);
             }
             const Vec3 step = e * (-lambda / len);
             for (int k = 0; k < 3; ++k) V.x[tv[k]] += (w_[tv[k]] * g.barycentric[k]) * step;
         }
-        grips.resize(kept);
     };
     const auto collideSphere = [&](const Vec3& c, const Vec3& cPrev, bool withFriction) {
         const double reach = sp.radius + kToolReach;
@@ -721,7 +724,9 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             // The tool's hard surface is at its radius; its lower cap, which presses the
             // paper onto the desk, also grips what lies within kToolReach below it (a
             // fingertip's soft skin; the step keeps the sphere above the desk).
-            if (nrm.y() < -0.7 && withFriction) grip(t, b, q - c);
+            const bool onDesk =
+                contacts_.ground && q.y() < contacts_.groundHeight + 2.0 * kToolReach;
+            if (nrm.y() < -0.7 && withFriction && onDesk) grip(t, b, q - c);
             if (!(dist < sp.radius)) continue;
             const double push = sp.radius - dist;
             Vec3 move = push * nrm;

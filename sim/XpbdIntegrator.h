@@ -54,7 +54,9 @@ inline constexpr double kGripCompliance = 1e-3;
 //    soft, force-limited constraint), a forward and a backward Gauss-Seidel pass over
 //    the distance constraints from E·t (their push capped at the buckling load),
 //    tethers to the pins, and the contacts again without friction.
-// 3. Fast projection of whatever the sub-steps left stretched by more than 0.3 %.
+// 3. When the sub-steps leave an edge stretched by more than 0.3 %, a fast projection of
+//    every structural edge not buckled back to its rest length.
+// The plastic rest values are updated once per step, before the first bending solve.
 // docs/model.md and docs/material.md give where this departs from the paper and why.
 class XpbdIntegrator final : public Integrator {
   public:
@@ -81,12 +83,12 @@ class XpbdIntegrator final : public Integrator {
     static std::vector<Stencil> bendingStencils(const Sheet& sheet, const Material& m);
 
   private:
-    // The step of the bending solve: one sub-step.
+    // The step the bending solve is factored for: kSubstepsPerBendingSolve sub-steps.
     static double solveStep(const SimParams& p) {
         const int n = std::max(1, p.substeps);
         return std::min(kSubstepsPerBendingSolve, n) * p.dt / n;
     }
-    void rebuild(const Sheet& sheet, const SimParams& params);
+    void rebuild(Sheet& sheet, const SimParams& params);
     void factor(const Sheet& sheet, const SimParams& params);
     void colourStretchConstraints(Index vertices);
     void bendImplicitly(Sheet& sheet, const Vec3& g, double h);
