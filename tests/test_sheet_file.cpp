@@ -10,6 +10,7 @@
 #include <QCborValue>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <bit>
 
 using namespace pf;
 
@@ -74,6 +75,38 @@ QByteArray withBytes(const char* field, qsizetype offset, const QByteArray& repl
 QByteArray le32(qint32 v) {
     const auto le = qToLittleEndian(v);
     return QByteArray(reinterpret_cast<const char*>(&le), 4);
+}
+
+QByteArray f64s(std::initializer_list<double> values) {
+    QByteArray out;
+    for (double v : values) {
+        const auto le = qToLittleEndian(std::bit_cast<quint64>(v));
+        out.append(reinterpret_cast<const char*>(&le), 8);
+    }
+    return out;
+}
+
+// The valid file with the xpbd state of its sheet replaced.
+QByteArray withPaperState(qint64 plasticCount, const QByteArray& plastic, qint64 gripCount,
+                          const QByteArray& grips) {
+    QCborMap root = QCborValue::fromCbor(validFile()).toMap();
+    QCborMap sheet = root[QLatin1String("sheet")].toMap();
+    sheet[QLatin1String("plasticCount")] = plasticCount;
+    sheet[QLatin1String("plastic")] = plastic;
+    sheet[QLatin1String("gripCount")] = gripCount;
+    sheet[QLatin1String("grips")] = grips;
+    root[QLatin1String("sheet")] = sheet;
+    return QCborValue(root).toCbor();
+}
+
+QByteArray plasticBend(std::initializer_list<qint32> vertices) {
+    QByteArray out;
+    for (qint32 v : vertices) out += le32(v);
+    return out + f64s({0.0, 1.0, 0.0});
+}
+
+QByteArray toolGrip(qint32 triangle, double b0, double b1, double b2) {
+    return le32(triangle) + f64s({b0, b1, b2, 0.0, -0.04, 0.0});
 }
 
 } // namespace
@@ -298,6 +331,20 @@ class TestSheetFile : public QObject {
         QTest::newRow("dt is NaN") << withField({"params", "dt"}, qQNaN()) << "dt";
         QTest::newRow("unknown integrator")
             << withField({"params", "integrator"}, QStringLiteral("rk4")) << "rk4";
+        QTest::newRow("plastic bend on a missing vertex")
+            << withPaperState(1, plasticBend({0, 1, 999999, -1, -1}), 0, {})
+            << "plastic bend names a vertex";
+        QTest::newRow("plastic bend with a gap")
+            << withPaperState(1, plasticBend({0, -1, 1, 2, -1}), 0, {}) << "gap";
+        QTest::newRow("plastic bend repeating a vertex")
+            << withPaperState(1, plasticBend({0, 1, 1, -1, -1}), 0, {}) << "repeats";
+        QTest::newRow("two grips on one triangle")
+            << withPaperState(0, {}, 2, toolGrip(0, 1, 0, 0) + toolGrip(0, 0, 1, 0))
+            << "repeated triangle";
+        QTest::newRow("grip off its triangle")
+            << withPaperState(0, {}, 1, toolGrip(0, 1, 1, 0)) << "tool grip is malformed";
+        QTest::newRow("more grips than triangles")
+            << withPaperState(0, {}, qint64(1) << 40, {}) << "gripCount";
         QTest::newRow("huge vertex count")
             << withField({"sheet", "vertexCount"}, qint64(1) << 40) << "vertexCount";
         QTest::newRow("count disagrees with bytes")

@@ -23,15 +23,23 @@ int main(int argc, char** argv) {
     for (const char* sub : {"sheets", "images", "patterns"})
         if (!root.mkpath(QLatin1String(sub))) return 1;
     int n = 0;
-    for (const auto& name : pf::sceneNames()) {
-        pf::SceneOptions o;
-        o.resolution = 4;
-        pf::Simulation sim(*pf::makeScene(name, o));
-        for (int k = 0; k < 120; ++k) sim.step();
-        if (!writeFile(root.filePath(QStringLiteral("sheets/seed%1.paper").arg(n++)),
-                       pf::encodeWorld(sim.world())))
-            return 1;
-    }
+    // Each scene with the paper's integrator, and with xpbd on a paper that yields
+    // easily, so that the seeds carry plastic bends, tool grips and a sleep counter.
+    for (const auto& name : pf::sceneNames())
+        for (const bool xpbd : {false, true}) {
+            pf::SceneOptions o;
+            o.resolution = 4;
+            pf::World w = *pf::makeScene(name, o);
+            if (xpbd) {
+                w.params.integrator = "xpbd";
+                w.params.material.yieldCurvature = 1.0;
+            }
+            pf::Simulation sim(std::move(w));
+            for (int k = 0; k < 120; ++k) sim.step();
+            if (!writeFile(root.filePath(QStringLiteral("sheets/seed%1.paper").arg(n++)),
+                           pf::encodeWorld(sim.world())))
+                return 1;
+        }
     n = 0;
     for (const QImage::Format format : {QImage::Format_RGB32, QImage::Format_ARGB32,
                                         QImage::Format_Grayscale8, QImage::Format_Indexed8}) {
