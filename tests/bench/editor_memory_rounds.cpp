@@ -21,6 +21,7 @@
 #include <QFile>
 #include <QMouseEvent>
 #include <QRandomGenerator>
+#include <QSignalSpy>
 #include <QtTest>
 #include <cstdio>
 #include <cstdlib>
@@ -70,6 +71,12 @@ SimulationStatus settle(MainWindow& w, int ms) {
     QElapsedTimer t;
     t.start();
     while (spy.count() < 1 && t.elapsed() < 5000) QTest::qWait(5);
+    // Until the viewport has drawn that snapshot, it still holds the previous sheet's
+    // subdivided surface; on a loaded machine (CI runs suites side by side) 200 ms was
+    // not always enough and "after New" measured the crumpled sheet's buffers too.
+    QSignalSpy drawn(w.viewport(), &Viewport::frameDrawn);
+    t.restart();
+    while (drawn.count() < 2 && t.elapsed() < 5000) QTest::qWait(5);
     QTest::qWait(200); // a few repaints with it
     return w.simulation()->status();
 }
