@@ -297,14 +297,20 @@ void XpbdIntegrator::rebuild(Sheet& sheet, const SimParams& params) {
     const auto& S = sheet.springs;
     const Material& m = params.material;
     const std::vector<double> k = stretchStiffness(sheet, m);
-    compliance_.assign(static_cast<std::size_t>(S.size()), -1.0);
-    maxPush_.assign(static_cast<std::size_t>(S.size()), 0.0);
+    constexpr double kUnlimited = std::numeric_limits<double>::infinity();
+    stretch_.clear();
+    longestEdge_ = 0.0;
     for (Index s = 0; s < S.size(); ++s) {
+        longestEdge_ = std::max(longestEdge_, S.rest[s]);
+        const StretchConstraint base{S.a[s], S.b[s], S.rest[s], 0.0, 0.0, 0.0};
         switch (S.kind[s]) {
         case SpringKind::Structural: {
             if (!(k[s] > 0.0)) break;
-            compliance_[s] = 1.0 / k[s];
-            maxPush_[s] = bucklingLoad(sheet, s, m);
+            StretchConstraint c = base;
+            c.compliance = 1.0 / k[s];
+            c.maxPush = bucklingLoad(sheet, s, m);
+            c.maxPull = kUnlimited;
+            stretch_.push_back(c);
             break;
         }
         case SpringKind::Crease: {
@@ -312,32 +318,26 @@ void XpbdIntegrator::rebuild(Sheet& sheet, const SimParams& params) {
             // buckled strip it stands for: up to its buckling load either way. Held
             // rigidly, it fought the uncreased paper around it, which cannot follow a
             // shortened edge without stretching (20 % stretch next to press's creases).
-            compliance_[s] = 1.0 / k[s];
-            maxPush_[s] = bucklingLoad(sheet, s, m);
+            StretchConstraint c = base;
+            c.compliance = 1.0 / k[s];
+            c.maxPush = c.maxPull = bucklingLoad(sheet, s, m);
+            stretch_.push_back(c);
             break;
         }
-        case SpringKind::Hinge:
+        case SpringKind::Hinge: {
             // A hinge keeps the flaps of a closed fold from passing through each other:
             // a hard, one-sided limit (no pull below). As a two-sided spring of the
             // paper's 100 N/m it rang undamped against the light vertices of the fold
             // (period 1.7 ms) and held 3 % stretch in press long after the tool left.
-            compliance_[s] = 0.0;
-            maxPush_[s] = std::numeric_limits<double>::infinity();
+            StretchConstraint c = base;
+            c.maxPush = kUnlimited;
+            stretch_.push_back(c);
             break;
+        }
         case SpringKind::Bending: // bending is the stencils' job here
             break;
         }
     }
-    longestEdge_ = 0.0;
-    for (Index s = 0; s < S.size(); ++s) longestEdge_ = std::max(longestEdge_, S.rest[s]);
-    stretch_.clear();
-    for (Index s = 0; s < S.size(); ++s)
-        if (compliance_[s] >= 0.0)
-            stretch_.push_back({S.a[s], S.b[s], S.rest[s], compliance_[s], maxPush_[s],
-                                S.kind[s] == SpringKind::Crease ? maxPush_[s]
-                                : S.kind[s] == SpringKind::Hinge
-                                    ? 0.0
-                                    : std::numeric_limits<double>::infinity()});
     colourStretchConstraints(sheet.verts.size());
     // A fold the paper has yielded into stays when the mesh changes elsewhere, and
     // comes back from a file: the rest values are kept with the sheet, by vertices.

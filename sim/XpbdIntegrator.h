@@ -100,8 +100,6 @@ class XpbdIntegrator final : public Integrator {
     ContactScene contacts_;
     std::array<std::int64_t, 7> signature_{-1, -1, -1, -1, -1, -1, -1};
     Material builtFor_;
-    std::vector<double> compliance_; // per spring; < 0: not a stretch constraint
-    std::vector<double> maxPush_;    // per spring: compressive force before buckling, N
     std::vector<Stencil> stencils_;
     // Plastic bending: per stencil, the rest value of Σ k x (the curvature the paper
     // keeps when let go, in the stencil's measure), and the force those rest values
@@ -111,7 +109,8 @@ class XpbdIntegrator final : public Integrator {
     // The stretch constraints packed for the sub-step loop, ordered by colour.
     struct StretchConstraint {
         Index a, b;
-        double rest, compliance, maxPush, maxPull;
+        double rest, compliance;
+        double maxPush, maxPull; // the largest force the constraint exerts each way, N
     };
     std::vector<StretchConstraint> stretch_;
     struct Tether {

@@ -43,4 +43,13 @@ Sheet makeJitteredSheet(int columns, int rows, unsigned seed) {
     return s;
 }
 
+void holdFarEdge(World& w, int resolution) {
+    const SheetSpec spec = a4Spec(resolution);
+    PinGroup held;
+    for (int c = 0; c < spec.columns; ++c)
+        held.vertices.push_back((spec.rows - 1) * spec.columns + c);
+    for (Index i : held.vertices) w.sheet.verts.pinned[i] = 1;
+    w.script.pins.push_back(held);
+}
+
 } // namespace pf::test

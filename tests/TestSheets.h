@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Sheet.h"
+#include "World.h"
 
 namespace pf::test {
 
@@ -16,5 +17,9 @@ Sheet makeFoldedQuad();
 // out of plane and in plane (deterministically from seed), so that every
 // interior edge is a valid break candidate with two faces.
 Sheet makeJitteredSheet(int columns, int rows, unsigned seed);
+
+// Pins the last row of an A4 sheet built at `resolution` (the edge farthest from the
+// press scene's start) in place for the whole run.
+void holdFarEdge(World& w, int resolution);
 
 } // namespace pf::test

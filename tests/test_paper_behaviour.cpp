@@ -7,6 +7,7 @@
 #include "SheetBuilder.h"
 #include "SheetStats.h"
 #include "Simulation.h"
+#include "TestSheets.h"
 
 #include <QtTest>
 #include <cmath>
@@ -57,14 +58,7 @@ World pushScene(bool holdFarEdge) {
     // choose where to rise, as the compress scene's does.
     for (Vec3& x : w.sheet.verts.x)
         x.y() = 0.0005 * (1.0 + std::sin(std::numbers::pi * x.z() / 0.1485)) / 2.0;
-    if (holdFarEdge) {
-        const SheetSpec spec = a4Spec(19);
-        PinGroup held;
-        for (int c = 0; c < spec.columns; ++c)
-            held.vertices.push_back((spec.rows - 1) * spec.columns + c);
-        for (Index i : held.vertices) w.sheet.verts.pinned[i] = 1;
-        w.script.pins.push_back(held);
-    }
+    if (holdFarEdge) test::holdFarEdge(w, 19);
     return w;
 }
 

@@ -5,6 +5,7 @@
 #include "SheetFile.h"
 #include "SheetStats.h"
 #include "Simulation.h"
+#include "TestSheets.h"
 
 #include <QCborMap>
 #include <QCborValue>
@@ -244,12 +245,7 @@ class TestSheetFile : public QObject {
         World start = *makeScene("press");
         start.params.integrator = "xpbd";
         start.params.material.yieldCurvature = 5.0;
-        const SheetSpec spec = a4Spec(19);
-        PinGroup held;
-        for (int c = 0; c < spec.columns; ++c)
-            held.vertices.push_back((spec.rows - 1) * spec.columns + c);
-        for (Index i : held.vertices) start.sheet.verts.pinned[i] = 1;
-        start.script.pins.push_back(held);
+        test::holdFarEdge(start, 19);
         // Saved mid-stroke (the tool holds the paper) and after the tool has left (a
         // fold has yielded), each resumed run ends where the whole run does.
         Simulation whole(start);
