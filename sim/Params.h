@@ -42,18 +42,18 @@ struct SimParams {
     // Start the Jacobi iteration at Δv = h·g (gravity integrated outside the implicit
     // filter) instead of at 0 as Eq. 6 does. A rigid translation then falls exactly,
     // because A·(h g 1) = M·h g; the iteration matrix, and so stability, is unchanged.
-    // Off reproduces the paper, which divides gravity by W (solver-facts.md).
+    // Off reproduces the paper, which divides gravity by W (docs/solver-lab.md).
     bool gravityOutsideFilter = false;
 
     // Clamp (1 - L/l) at zero in the Jacobian of a compressed spring so that the
-    // system matrix stays positive definite (DESIGN.md reading; see solver-facts.md).
+    // system matrix stays positive definite (docs/model.md, Integrators).
     bool clampCompressed = true;
 
     bool breaking = true;
     bool hinges = true;
     // A hinge is inserted when |x_r - x_l| falls below this fraction of its rest distance.
     double hingeThreshold = 0.5;
-    // Eq. 10 is a probability per reference step of this length (DESIGN.md reading).
+    // Eq. 10 is a probability per reference step of this length (docs/model.md, Breaking).
     double breakReferenceStep = 1.0 / 60.0;
 
     // Contact: fraction of tangential velocity removed per step while touching.

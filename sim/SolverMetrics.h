@@ -22,7 +22,7 @@ double trajectoryError(const Sheet& run, const Sheet& reference);
 
 // Centre-of-mass acceleration over 0.1 s divided by g for a sheet hanging straight
 // down (springs along gravity), released from rest, no ground. Exact backward Euler
-// gives 1; the paper's step loses most of it (solver-facts.md).
+// gives 1; the paper's step loses most of it (docs/solver-lab.md).
 double freeFallRatio(const SimParams& settings);
 
 // Total mechanical energy: kinetic, spring (½ k (l - L)² per spring) and gravitational
