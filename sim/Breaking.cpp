@@ -209,6 +209,12 @@ bool recoverEvent(Sheet& sheet, Index event) {
     return true;
 }
 
+bool canBreak(const Sheet& sheet, Index spring) {
+    const auto& S = sheet.springs;
+    return S.kind[spring] == SpringKind::Structural && S.breakable[spring] &&
+           S.faces[spring][0] != kNone && S.faces[spring][1] != kNone;
+}
+
 int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t step,
                  BreakScratch& scratch) {
     computeVertexNormals(sheet, scratch.normals);
@@ -218,10 +224,9 @@ int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t s
     // Springs appended by a break in this pass are not visited until the next step.
     const Index count = sheet.springs.size();
     for (Index s = 0; s < count; ++s) {
+        if (!canBreak(sheet, s)) continue;
         const auto& S = sheet.springs;
-        if (S.kind[s] != SpringKind::Structural || !S.breakable[s]) continue;
         const Index t1 = S.faces[s][0], t2 = S.faces[s][1];
-        if (t1 == kNone || t2 == kNone) continue;
         const auto& V = sheet.verts;
         const Index i = S.a[s], j = S.b[s];
         if (V.pinned[i] && V.pinned[j]) continue;

@@ -20,6 +20,10 @@ double breakProbabilityPerStep(double P, double h, double referenceStep);
 // Eq. 11: how far the new vertex moves along the normal, h = ψ/2 sqrt(l0² - l²).
 double breakOffset(double l, double l0, double psi);
 
+// Whether Eq. 10 applies to `spring` at all: a breakable structural edge between two
+// triangles (a border edge has nowhere to put the new vertex's second face).
+bool canBreak(const Sheet& sheet, Index spring);
+
 // Breaks structural spring `spring` (which must have two faces): inserts vertex n
 // between its ends, offset by Eq. 11 toward the side the edge bends to, splits both
 // triangles, turns the spring into a crease and logs the event. Returns the event id.

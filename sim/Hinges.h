@@ -11,4 +11,11 @@ namespace pf {
 // is the current distance (the fold is remembered) and log it. Returns the count.
 int runHingePass(Sheet& sheet, const SimParams& params, std::int64_t step);
 
+// Whether structural edge `spring` can take a hinge: it has two faces and none yet.
+bool canHinge(const Sheet& sheet, Index spring);
+
+// Inserts the hinge across `spring` (canHinge must hold) with rest length `rest`, logs
+// it as a damage event at `step` and returns the event's id.
+Index insertHinge(Sheet& sheet, Index spring, double rest, std::int64_t step);
+
 } // namespace pf

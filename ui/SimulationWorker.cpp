@@ -1,6 +1,7 @@
 #include "SimulationWorker.h"
 
 #include "Breaking.h"
+#include "Hinges.h"
 #include "Normals.h"
 #include "Scenes.h"
 #include "SheetStats.h"
@@ -129,29 +130,13 @@ void SimulationWorker::redoStroke(int stroke) {
     for (StrokeEvent& se : strokes_[static_cast<std::size_t>(stroke)]) {
         // Undone in reverse order, the edges have their old ids again.
         if (se.edge < 0 || se.edge >= s.springs.size()) continue;
-        const auto& S = s.springs;
         if (se.kind == EventKind::Break) {
-            if (S.kind[se.edge] != SpringKind::Structural || !S.breakable[se.edge] ||
-                S.faces[se.edge][0] == kNone || S.faces[se.edge][1] == kNone)
-                continue;
+            if (!canBreak(s, se.edge)) continue;
             computeVertexNormals(s, normals);
             se.event = breakEdge(s, se.edge, normals, w.params.psi, w.stepCount);
         } else {
-            if (S.kind[se.edge] != SpringKind::Structural || S.hinged[se.edge] ||
-                S.faces[se.edge][0] == kNone || S.faces[se.edge][1] == kNone)
-                continue;
-            const Index r = s.oppositeVertex(S.faces[se.edge][0], S.a[se.edge], S.b[se.edge]);
-            const Index l = s.oppositeVertex(S.faces[se.edge][1], S.a[se.edge], S.b[se.edge]);
-            const Index hinge = s.addSpring(r, l, se.hingeRest, SpringKind::Hinge, false);
-            DamageEvent ev;
-            ev.kind = EventKind::Hinge;
-            ev.step = w.stepCount;
-            ev.edge = se.edge;
-            ev.springs = {hinge, kNone, kNone, kNone};
-            s.events.push_back(ev);
-            se.event = static_cast<Index>(s.events.size()) - 1;
-            s.springs.event[hinge] = se.event;
-            s.springs.hinged[se.edge] = 1;
+            if (!canHinge(s, se.edge)) continue;
+            se.event = insertHinge(s, se.edge, se.hingeRest, w.stepCount);
         }
         ++reapplied;
     }
