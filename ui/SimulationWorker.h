@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Simulation.h"
+#include "EditSession.h"
 
 #include <QObject>
 #include <QTimer>
@@ -35,26 +35,14 @@ class SimulationWorker : public QObject {
     void runCommands();
 
   private:
-    // What a stroke did, enough to undo it and do it again.
-    struct StrokeEvent {
-        Index event = kNone;
-        EventKind kind = EventKind::Break;
-        Index edge = kNone;
-        double hingeRest = 0.0;
-    };
     void frame();
     void advance(int steps);
     void publish(double stepSeconds);
-    void endStroke();
 
-    Simulation sim_;
+    EditSession session_;
     SimulationThread* owner_;
     QTimer timer_;
     bool playing_ = true;
-    Vec3 toolTarget_ = Vec3::Zero();
-    bool pressed_ = false;
-    Index strokeStart_ = 0;
-    std::vector<std::vector<StrokeEvent>> strokes_;
 };
 
 } // namespace pf
