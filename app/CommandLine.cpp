@@ -57,13 +57,13 @@ void rejectExtraArguments(const QCommandLineParser& parser, int allowed) {
         throw UsageError{QStringLiteral("unexpected argument '%1'").arg(extra.first())};
 }
 
-bool parseCommand(QCommandLineParser& parser, const QStringList& arguments) {
+bool parseCommand(QCommandLineParser& parser, const QStringList& arguments, int positional) {
     if (!parser.parse(arguments)) throw UsageError{parser.errorText()};
     if (parser.isSet(QStringLiteral("help"))) {
         QTextStream(stdout) << parser.helpText();
         return false;
     }
-    rejectExtraArguments(parser, 1);
+    rejectExtraArguments(parser, positional);
     return true;
 }
 

@@ -30,6 +30,7 @@ void rejectExtraArguments(const QCommandLineParser& parser, int allowed);
 
 // Parses a subcommand's arguments: throws UsageError for unknown options or extra
 // arguments; prints the help and returns false for --help.
-bool parseCommand(QCommandLineParser& parser, const QStringList& arguments);
+// `positional` counts the subcommand itself.
+bool parseCommand(QCommandLineParser& parser, const QStringList& arguments, int positional = 1);
 
 } // namespace pf::cli

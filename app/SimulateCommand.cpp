@@ -2,51 +2,15 @@
 
 #include "CommandLine.h"
 #include "SheetFile.h"
-#include "SheetStats.h"
 #include "Simulation.h"
+#include "StatsJson.h"
 #include "WorldOptions.h"
 
 #include <QElapsedTimer>
 #include <QJsonDocument>
-#include <QJsonObject>
 #include <QTextStream>
 
 namespace pf::cli {
-
-namespace {
-
-QJsonObject statsJson(const Simulation& sim, double wallSeconds, long long steps) {
-    const World& w = sim.world();
-    const SheetStats st = computeStats(w.sheet);
-    QJsonObject o;
-    o[QStringLiteral("scene")] = QString::fromStdString(w.scene);
-    o[QStringLiteral("integrator")] = QString::fromStdString(w.params.integrator);
-    o[QStringLiteral("iterations")] = w.params.iterations;
-    o[QStringLiteral("dt")] = w.params.dt;
-    o[QStringLiteral("seed")] = QString::number(w.seed);
-    o[QStringLiteral("steps")] = steps;
-    o[QStringLiteral("vertices")] = st.vertices;
-    o[QStringLiteral("springs")] = st.springs;
-    o[QStringLiteral("triangles")] = st.triangles;
-    o[QStringLiteral("breaks")] = st.breaks;
-    o[QStringLiteral("recoveries")] = st.recoveries;
-    o[QStringLiteral("hinges")] = st.hinges;
-    o[QStringLiteral("total_mass")] = st.totalMass;
-    o[QStringLiteral("max_strain")] = st.maxStrain;
-    o[QStringLiteral("rms_strain")] = st.rmsStrain;
-    o[QStringLiteral("max_stretch")] = st.maxStretch;
-    o[QStringLiteral("rms_stretch")] = st.rmsStretch;
-    o[QStringLiteral("max_compression")] = st.maxCompression;
-    // Hex text: a 64-bit hash does not survive JSON's double-precision numbers.
-    o[QStringLiteral("state_hash")] =
-        QStringLiteral("%1").arg(stateHash(w.sheet), 16, 16, QLatin1Char('0'));
-    o[QStringLiteral("sim_time")] = w.time;
-    o[QStringLiteral("wall_seconds")] = wallSeconds;
-    o[QStringLiteral("steps_per_second")] = wallSeconds > 0.0 ? steps / wallSeconds : 0.0;
-    return o;
-}
-
-} // namespace
 
 int runSimulate(const QStringList& arguments) {
     QCommandLineParser parser;
@@ -91,7 +55,7 @@ int runSimulate(const QStringList& arguments) {
             return 2;
         }
     }
-    QJsonObject stats = statsJson(sim, wall, done);
+    QJsonObject stats = statsJson(sim.world(), wall, done);
     stats[QStringLiteral("diverged")] = diverged;
     if (parser.isSet(QStringLiteral("stats"))) {
         QTextStream(stdout) << QJsonDocument(stats).toJson(QJsonDocument::Compact) << '\n';

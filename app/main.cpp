@@ -4,6 +4,7 @@
 #include "ExportCommand.h"
 #include "FidelityCommand.h"
 #include "RenderCommand.h"
+#include "ReplayCommand.h"
 #include "SimulateCommand.h"
 #include "StabilityCommand.h"
 
@@ -27,6 +28,7 @@ void printUsage(QTextStream& out) {
            "  simulate   run a scene or a saved sheet headless; report statistics, save\n"
            "  export     write the subdivided surface as .obj, .ply or .glb\n"
            "  render     render PNG stills or image sequences with no display (OSMesa)\n"
+           "  replay     do a session recorded in the editor again, bit for bit\n"
            "  stability  map where each integrator fails (CSV and heat maps)\n"
            "  fidelity   check the sheet against physics (stretch, free fall, cantilever...)\n"
            "  bench      speed against accuracy of every integrator configuration (CSV, chart)\n"
@@ -82,6 +84,7 @@ int main(int argc, char* argv[]) {
         if (args[1] == QLatin1String("simulate")) return pf::cli::runSimulate(args);
         if (args[1] == QLatin1String("export")) return pf::cli::runExport(args);
         if (args[1] == QLatin1String("render")) return pf::cli::runRender(args);
+        if (args[1] == QLatin1String("replay")) return pf::cli::runReplay(args);
         if (args[1] == QLatin1String("stability")) return pf::cli::runStability(args);
         if (args[1] == QLatin1String("bench")) return pf::cli::runBench(args);
         if (args[1] == QLatin1String("fidelity")) return pf::cli::runFidelity(args);

@@ -11,6 +11,70 @@ EditSession::EditSession(World world) : sim_(std::move(world)) {
     // The user drives the sphere; a scene's scripted path would fight the mouse.
     sim_.world().script.sphereKeys.clear();
     toolTarget_ = sim_.world().sphere.center;
+    beginLog();
+}
+
+EditSession::EditSession(const EditLog& log) : sim_(log.start) {
+    sim_.world().script.sphereKeys.clear();
+    toolTarget_ = log.toolTarget;
+    pressed_ = log.pressed;
+    strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
+    beginLog();
+}
+
+void EditSession::beginLog() {
+    log_.start = sim_.world();
+    log_.toolTarget = toolTarget_;
+    log_.pressed = pressed_;
+    log_.commands.clear();
+}
+
+void EditSession::record(EditCommand command) {
+    command.step = sim_.world().stepCount;
+    log_.commands.push_back(std::move(command));
+}
+
+EditLog EditSession::log() const {
+    EditLog out = log_;
+    out.endStep = sim_.world().stepCount;
+    return out;
+}
+
+void EditSession::apply(const EditCommand& c) {
+    switch (c.kind) {
+    case EditCommand::Kind::Tool:
+        setTool(c.target, c.radius, c.visible, c.pressed);
+        break;
+    case EditCommand::Kind::PlaceTool:
+        placeToolAtTarget();
+        break;
+    case EditCommand::Kind::Undo:
+        undoStroke(c.stroke);
+        break;
+    case EditCommand::Kind::Redo:
+        redoStroke(c.stroke);
+        break;
+    case EditCommand::Kind::Params:
+        if (c.params) setParams(*c.params);
+        break;
+    }
+}
+
+std::string replay(const EditLog& log, EditSession& session) {
+    auto stepTo = [&](std::int64_t step) -> std::string {
+        const std::int64_t now = session.world().stepCount;
+        if (step < now)
+            return "a command at step " + std::to_string(step) + " comes after step " +
+                   std::to_string(now);
+        if (step > now && session.advance(static_cast<int>(step - now)) != StepStatus::Ok)
+            return "the step after " + std::to_string(session.world().stepCount) + " failed";
+        return {};
+    };
+    for (const EditCommand& c : log.commands) {
+        if (std::string error = stepTo(c.step); !error.empty()) return error;
+        session.apply(c);
+    }
+    return stepTo(log.endStep);
 }
 
 void EditSession::replaceWorld(const World& world) {
@@ -21,9 +85,14 @@ void EditSession::replaceWorld(const World& world) {
     sim_.world().sphere.active = tool.active;
     strokes_.clear();
     strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
+    beginLog();
 }
 
 void EditSession::setParams(const SimParams& params) {
+    EditCommand c;
+    c.kind = EditCommand::Kind::Params;
+    c.params = std::make_shared<const SimParams>(params);
+    record(std::move(c));
     if (!(params.material == sim_.world().params.material))
         setMaterial(sim_.world(), params.material);
     sim_.world().params = params;
@@ -31,6 +100,7 @@ void EditSession::setParams(const SimParams& params) {
 
 std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, double radius,
                                                            bool visible, bool pressed) {
+    record({EditCommand::Kind::Tool, 0, target, radius, visible, pressed, -1, nullptr});
     SphereTool& sphere = sim_.world().sphere;
     toolTarget_ = target;
     sphere.radius = radius;
@@ -59,6 +129,7 @@ std::optional<EditSession::StrokeEnd> EditSession::endStroke() {
 }
 
 std::optional<int> EditSession::undoStroke(int stroke) {
+    record({EditCommand::Kind::Undo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr});
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
     int recovered = 0;
     auto& events = strokes_[static_cast<std::size_t>(stroke)];
@@ -68,6 +139,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
 }
 
 std::optional<int> EditSession::redoStroke(int stroke) {
+    record({EditCommand::Kind::Redo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr});
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
     World& w = sim_.world();
     Sheet& s = w.sheet;
@@ -107,6 +179,7 @@ StepStatus EditSession::advance(int steps) {
 bool EditSession::placeToolAtTarget() {
     SphereTool& sphere = sim_.world().sphere;
     if ((sphere.center - toolTarget_).squaredNorm() == 0.0) return false;
+    record({EditCommand::Kind::PlaceTool, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr});
     sphere.center = toolTarget_;
     return true;
 }

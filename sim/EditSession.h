@@ -2,10 +2,35 @@
 
 #include "Simulation.h"
 
+#include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace pf {
+
+// One mutating call on an EditSession, stamped with the step it was applied before.
+struct EditCommand {
+    enum class Kind : std::uint8_t { Tool = 1, PlaceTool = 2, Undo = 3, Redo = 4, Params = 5 };
+    Kind kind = Kind::Tool;
+    std::int64_t step = 0;
+    Vec3 target = Vec3::Zero();              // Tool
+    double radius = 0.0;                     // Tool
+    bool visible = false;                    // Tool
+    bool pressed = false;                    // Tool
+    int stroke = -1;                         // Undo, Redo
+    std::shared_ptr<const SimParams> params; // Params (shared: most commands are tool moves)
+};
+
+// Everything needed to do a session again: the world it started from, the tool's target
+// and button then, every command, and the step it ended at.
+struct EditLog {
+    World start;
+    Vec3 toolTarget = Vec3::Zero();
+    bool pressed = false;
+    std::vector<EditCommand> commands;
+    std::int64_t endStep = 0;
+};
 
 // What a user does to a sheet, applied between steps: the tool follows a target at a
 // bounded speed, a press of it is a stroke, and a stroke's damage (breaks and hinges)
@@ -14,6 +39,8 @@ namespace pf {
 class EditSession {
   public:
     explicit EditSession(World world);
+    // Ready to replay `log`: its start world, tool target and button.
+    explicit EditSession(const EditLog& log);
 
     // The tool follows its target no faster than this: a jump of the cursor across the
     // sheet must not teleport the tool through the paper.
@@ -45,6 +72,12 @@ class EditSession {
     // moved.
     bool placeToolAtTarget();
 
+    // The session since it began or since the last replaceWorld, up to now.
+    EditLog log() const;
+
+    // Applies one command, as the call it stands for.
+    void apply(const EditCommand& command);
+
   private:
     // What a stroke did, enough to undo it and do it again.
     struct StrokeEvent {
@@ -54,12 +87,20 @@ class EditSession {
         double hingeRest = 0.0;
     };
     std::optional<StrokeEnd> endStroke();
+    void beginLog();
+    void record(EditCommand command);
 
     Simulation sim_;
     Vec3 toolTarget_ = Vec3::Zero();
     bool pressed_ = false;
     Index strokeStart_ = 0;
     std::vector<std::vector<StrokeEvent>> strokes_;
+    EditLog log_; // endStep is filled in by log()
 };
+
+// Does `log` again from its start: steps to each command's step, applies it, and steps
+// to the end. The result is bit for bit the session that was recorded. Returns an empty
+// string, or why the replay stopped (a command before the current step, a failed step).
+std::string replay(const EditLog& log, EditSession& session);
 
 } // namespace pf

@@ -1,6 +1,7 @@
 #include "SheetFile.h"
 
 #include "BoundedCbor.h"
+#include "InputFile.h"
 #include "Integrator.h"
 #include "OutputFile.h"
 #include "SheetValidation.h"
@@ -8,14 +9,10 @@
 #include <QCborArray>
 #include <QCborMap>
 #include <QCborValue>
-#include <QFile>
 #include <QtEndian>
 #include <bit>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <sys/stat.h>
-#include <system_error>
 
 namespace pf {
 
@@ -682,6 +679,25 @@ QByteArray encodeWorld(const World& world) {
     return root.toCborValue().toCbor();
 }
 
+QByteArray encodeParams(const SimParams& params) {
+    return QCborValue(paramsToCbor(params)).toCbor();
+}
+
+std::optional<SimParams> decodeParams(const QByteArray& bytes, QString* error) {
+    const std::optional<QCborValue> root = parseBoundedCbor(bytes, sheetFileBounds(), error);
+    if (!root) return std::nullopt;
+    if (!root->isMap()) {
+        *error = QStringLiteral("params: not a map");
+        return std::nullopt;
+    }
+    try {
+        return paramsFromCbor(root->toMap());
+    } catch (const FormatError& e) {
+        *error = e.message;
+        return std::nullopt;
+    }
+}
+
 WorldLoad decodeWorld(const QByteArray& bytes) {
     QString error;
     const std::optional<QCborValue> root = parseBoundedCbor(bytes, sheetFileBounds(), &error);
@@ -700,29 +716,10 @@ bool saveWorld(const World& world, const QString& path, QString* error, const QS
 }
 
 WorldLoad loadWorld(const QString& path) {
-    // Opening a FIFO would wait for a writer forever: look before opening.
-    struct stat before {};
-    if (stat(QFile::encodeName(path).constData(), &before) == 0 && !S_ISREG(before.st_mode))
-        return {std::nullopt,
-                QStringLiteral("%1 is not a regular file (a device, FIFO or folder)").arg(path)};
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return {std::nullopt, QStringLiteral("cannot open %1: %2").arg(path, file.errorString())};
-    // Checked on the open file, so nothing can swap it between the check and the read. A
-    // device such as /dev/zero has no size and would be read until memory runs out.
-    struct stat st {};
-    if (fstat(file.handle(), &st) != 0)
-        return {std::nullopt,
-                QStringLiteral("cannot open %1: %2")
-                    .arg(path, QString::fromStdString(
-                                   std::error_code(errno, std::generic_category()).message()))};
-    if (!S_ISREG(st.st_mode))
-        return {std::nullopt,
-                QStringLiteral("%1 is not a regular file (a device, FIFO or folder)").arg(path)};
-    if (st.st_size > kMaxSheetFileBytes)
-        return {std::nullopt,
-                QStringLiteral("%1 is larger than %2 MiB").arg(path).arg(kMaxSheetFileBytes >> 20)};
-    WorldLoad load = decodeWorld(file.read(kMaxSheetFileBytes + 1));
+    QString error;
+    const std::optional<QByteArray> bytes = readInputFile(path, kMaxSheetFileBytes, &error);
+    if (!bytes) return {std::nullopt, error};
+    WorldLoad load = decodeWorld(*bytes);
     if (!load.world) load.error = QStringLiteral("%1: %2").arg(path, load.error);
     return load;
 }

@@ -24,6 +24,11 @@ inline constexpr qint64 kMaxFileEvents = 8'000'000;
 
 QByteArray encodeWorld(const World& world);
 
+// The parameters alone, in the file's "params" encoding (a recording stores changes so).
+QByteArray encodeParams(const SimParams& params);
+// Checked as the sheet loader checks them; nothing and *error set if they are not valid.
+std::optional<SimParams> decodeParams(const QByteArray& bytes, QString* error);
+
 struct WorldLoad {
     std::optional<World> world;
     QString error; // one line naming what is wrong, when world is empty

@@ -1,8 +1,11 @@
 // The editing layer in sim/: the tool's speed limit, strokes and their undo and redo
 // through §4.2 recovery, driven headless exactly as the editor's simulation thread does.
 #include "EditSession.h"
+#include "RecordingFile.h"
 #include "SceneScript.h"
 #include "Scenes.h"
+#include "SheetFile.h"
+#include "SheetStats.h"
 #include "SheetValidation.h"
 
 #include <QtTest>
@@ -38,6 +41,43 @@ std::optional<EditSession::StrokeEnd> pushStroke(EditSession& session, double fr
         if (session.advance(stepsPerFrame) != StepStatus::Ok) return std::nullopt;
     }
     return session.setTool(spherePathAt(path, to), radius, true, false);
+}
+
+// A session that uses every command: two strokes, an undo and a redo, a change of φ,
+// the tool placed while paused, and stepping in between.
+void scriptedSession(EditSession& session) {
+    pushStroke(session, 0.0, 0.5);
+    session.advance(30);
+    SimParams p = session.world().params;
+    p.phi = 0.4;
+    session.setParams(p);
+    pushStroke(session, 0.5, 0.9);
+    session.undoStroke(1);
+    session.advance(12);
+    session.redoStroke(1);
+    session.undoStroke(0);
+    session.setTool(Vec3(0.05, 0.1, 0.02), 0.03, true, false);
+    session.placeToolAtTarget();
+    session.advance(20);
+}
+
+QString hex(std::uint64_t h) {
+    return QStringLiteral("%1").arg(h, 16, 16, QLatin1Char('0'));
+}
+
+// The encoded recording with one byte of its first command changed.
+QByteArray withCommandByte(const EditLog& log, qsizetype offset, char value) {
+    QByteArray bytes = encodeRecording(log);
+    // The "commands" key, then the byte string's CBOR head: major type 2 with the length
+    // inline or in the next 1, 2 or 4 bytes.
+    qsizetype at = bytes.indexOf(QByteArray("\x68"
+                                            "commands")) +
+                   9;
+    const int lengthBytes[] = {0, 1, 2, 4};
+    const int info = bytes[at] & 0x1f;
+    at += 1 + (info < 24 ? 0 : lengthBytes[info - 23]);
+    bytes[at + offset] = value;
+    return bytes;
 }
 
 } // namespace
@@ -136,6 +176,86 @@ class TestEditSession : public QObject {
         QCOMPARE(session.world().sphere.radius, radius);
         QVERIFY(session.world().sphere.active);
         QVERIFY(session.world().script.sphereKeys.empty());
+    }
+
+    void aRecordedSessionReplaysBitForBit() {
+        EditSession live(*makeScene("press"));
+        scriptedSession(live);
+        const EditLog log = live.log();
+        QVERIFY(log.commands.size() > 20);
+        QCOMPARE(log.endStep, live.world().stepCount);
+
+        // Through the file format, as `paperfold replay` reads it.
+        const RecordingLoad load = decodeRecording(encodeRecording(log));
+        QVERIFY2(load.log.has_value(), qPrintable(load.error));
+        QCOMPARE(load.log->commands.size(), log.commands.size());
+        EditSession again(*load.log);
+        QCOMPARE(QString::fromStdString(replay(*load.log, again)), QString());
+        QCOMPARE(again.world().stepCount, live.world().stepCount);
+        QCOMPARE(hex(stateHash(again.world().sheet)), hex(stateHash(live.world().sheet)));
+        QCOMPARE(again.world().sphere.center, live.world().sphere.center);
+        QCOMPARE(again.world().params.phi, 0.4);
+        // The replay records itself: recording it again gives the same file.
+        QCOMPARE(encodeRecording(again.log()), encodeRecording(log));
+    }
+
+    void theScriptedSessionReachesItsPinnedHash() {
+        // As Box2D's test_determinism.c: a fixed scene and command script must reach this
+        // hash. A deliberate change of the model or the editing layer updates it in the
+        // same commit; anything else that changes it is a bug.
+        EditSession session(*makeScene("press"));
+        scriptedSession(session);
+        QCOMPARE(hex(stateHash(session.world().sheet)), QStringLiteral("18b2490866b20aa8"));
+    }
+
+    void aNewSheetStartsANewRecording() {
+        EditSession session(*makeScene("press"));
+        scriptedSession(session);
+        session.replaceWorld(*makeScene("drape"));
+        const EditLog log = session.log();
+        QVERIFY(log.commands.empty());
+        QCOMPARE(log.start.scene, std::string("drape"));
+    }
+
+    void badRecordingsAreRefusedWithOneLine_data() {
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<QString>("error");
+        EditSession session(*makeScene("press"));
+        scriptedSession(session);
+        const EditLog log = session.log();
+        const QByteArray good = encodeRecording(log);
+        QTest::newRow("empty") << QByteArray() << "";
+        QTest::newRow("a sheet, not a recording") << encodeWorld(log.start) << "wrong magic";
+        QTest::newRow("truncated") << good.left(good.size() / 2) << "";
+        QTest::newRow("unknown command") << withCommandByte(log, 8, 9) << "unknown command";
+        QTest::newRow("unknown flags") << withCommandByte(log, 9, 4) << "unknown flags";
+        QTest::newRow("a step from the future") << withCommandByte(log, 6, 1) << "out of order";
+        QTest::newRow("a NaN target")
+            << withCommandByte(log, 16 + 7, char(0x7f)) << "outside the scene";
+        EditLog backwards = log;
+        std::swap(backwards.commands.front().step, backwards.commands.back().step);
+        QTest::newRow("steps going back") << encodeRecording(backwards) << "out of order";
+        EditLog early = log;
+        early.endStep = log.start.stepCount - 1;
+        QTest::newRow("ends before it starts") << encodeRecording(early) << "endStep";
+        EditLog badParams = log;
+        for (EditCommand& c : badParams.commands)
+            if (c.params) {
+                SimParams p = *c.params;
+                p.phi = 7.0;
+                c.params = std::make_shared<const SimParams>(p);
+            }
+        QTest::newRow("φ out of range") << encodeRecording(badParams) << "params";
+    }
+
+    void badRecordingsAreRefusedWithOneLine() {
+        QFETCH(QByteArray, bytes);
+        QFETCH(QString, error);
+        const RecordingLoad load = decodeRecording(bytes);
+        QVERIFY(!load.log.has_value());
+        QVERIFY(!load.error.isEmpty());
+        QVERIFY2(!load.error.contains(QLatin1Char('\n')), qPrintable(load.error));
+        QVERIFY2(load.error.contains(error), qPrintable(load.error));
     }
 };
 

@@ -3,6 +3,7 @@
 #include "MainWindow.h"
 #include "ParameterPanel.h"
 #include "QueuedSignalSpy.h"
+#include "RecordingFile.h"
 #include "SheetFile.h"
 #include "SheetStats.h"
 #include "SimulationThread.h"
@@ -176,6 +177,47 @@ class TestEditor : public QObject {
         window->action("redo")->trigger();
         QVERIFY(waitForCount(redone, 1));
         QCOMPARE(settledStatus(*window).breaks, after.breaks);
+    }
+
+    void aRecordedEditorSessionReplaysToTheSameState() {
+        // Through the real widgets: a slider edit, a push stroke while the simulation
+        // plays, an undo, a paused step; File ▸ Save Recording; the replay ends where the
+        // editor is.
+        Viewport* view = window->viewport();
+        window->panel()->phiSlider()->setValue(30);
+        window->action("play")->setChecked(true);
+        QPoint p = viewportCentre(*window) + QPoint(-60, 0);
+        moveMouse(view, p);
+        QTest::mousePress(view, Qt::LeftButton, {}, p);
+        for (int k = 0; k < 30; ++k) {
+            p += QPoint(4, 1);
+            moveMouse(view, p, Qt::LeftButton);
+            QTest::qWait(15);
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+        QTest::qWait(100);
+        window->action("play")->setChecked(false);
+        window->action("undo")->trigger();
+        window->simulation()->stepOnce();
+        window->simulation()->sync();
+
+        QTemporaryDir dir;
+        nextFile = dir.filePath(QStringLiteral("session.paperrec"));
+        window->action("saveRecording")->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        const auto editor = worldOf(*window);
+        QVERIFY(editor);
+
+        const RecordingLoad load = loadRecording(nextFile);
+        QVERIFY2(load.log.has_value(), qPrintable(load.error));
+        QVERIFY(load.log->commands.size() > 30);
+        QCOMPARE(load.log->endStep, editor->stepCount);
+        EditSession replayed(*load.log);
+        QCOMPARE(QString::fromStdString(replay(*load.log, replayed)), QString());
+        QCOMPARE(replayed.world().stepCount, editor->stepCount);
+        QCOMPARE(replayed.world().params.phi, editor->params.phi);
+        QCOMPARE(stateHash(replayed.world().sheet), stateHash(editor->sheet));
+        QCOMPARE(replayed.world().sphere.center, editor->sphere.center);
     }
 
     void saveThenOpenRestoresTheSheetExactly() {

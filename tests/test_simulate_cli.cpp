@@ -1,4 +1,9 @@
 // `paperfold simulate`: the JSON contract and the handling of bad input.
+#include "EditSession.h"
+#include "RecordingFile.h"
+#include "Scenes.h"
+#include "SheetStats.h"
+
 #include <QDir>
 #include <QImage>
 #include <QJsonDocument>
@@ -326,6 +331,48 @@ class TestSimulateCli : public QObject {
                 coloured += c.saturation() > 100;
             }
         QVERIFY(coloured > 100);
+    }
+
+    void replayDoesARecordedSessionAgain() {
+        // A session as the editor records one: a push stroke along the press path (which
+        // breaks the sheet), its undo, then steps.
+        pf::EditSession session(*pf::makeScene("press"));
+        const auto path = pf::makeScene("press")->script.sphereKeys;
+        const double radius = session.world().sphere.radius;
+        for (double t = 0.0; t < 0.6; t += 1.0 / 60.0) {
+            session.setTool(pf::spherePathAt(path, t), radius, true, true);
+            QCOMPARE(session.advance(4), pf::StepStatus::Ok);
+        }
+        session.setTool(pf::spherePathAt(path, 0.6), radius, true, false);
+        session.undoStroke(0);
+        QCOMPARE(session.advance(40), pf::StepStatus::Ok);
+        const QString expected = QStringLiteral("%1").arg(pf::stateHash(session.world().sheet), 16,
+                                                          16, QLatin1Char('0'));
+
+        QTemporaryDir dir;
+        const QString rec = dir.filePath(QStringLiteral("session.paperrec"));
+        QString error;
+        QVERIFY2(pf::saveRecording(session.log(), rec, &error), qPrintable(error));
+        const QString sheet = dir.filePath(QStringLiteral("end.paper"));
+        const Result r = runPaperfold({"replay", rec, "--stats", "--save", sheet});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(o[QStringLiteral("state_hash")].toString(), expected);
+        QCOMPARE(o[QStringLiteral("complete")].toBool(), true);
+        QCOMPARE(o[QStringLiteral("steps")].toInt(), int(session.world().stepCount));
+        QVERIFY(QFileInfo::exists(sheet));
+
+        // A broken recording: one line, exit 1, nothing written.
+        QFile f(rec);
+        QVERIFY(f.open(QIODevice::ReadWrite));
+        const QByteArray bytes = f.readAll();
+        f.resize(bytes.size() / 3);
+        f.close();
+        const Result bad = runPaperfold({"replay", rec});
+        QCOMPARE(bad.exitCode, 1);
+        QCOMPARE(bad.err.count('\n'), 1);
+        QVERIFY2(bad.err.contains("session.paperrec"), bad.err.constData());
+        QCOMPARE(runPaperfold({"replay"}).exitCode, 1);
     }
 
     void divergenceIsReportedNotCrashed() {

@@ -329,10 +329,6 @@
         <translation>Das Bild konnte nicht exportiert werden: %1</translation>
     </message>
     <message>
-        <source>Could not write %1</source>
-        <translation>%1 konnte nicht geschrieben werden</translation>
-    </message>
-    <message>
         <source>Choose a file ending in .obj, .ply or .glb</source>
         <translation>Wählen Sie eine Datei mit der Endung .obj, .ply oder .glb</translation>
     </message>
@@ -363,6 +359,26 @@
     <message>
         <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
         <translation>Kein bench_*.png in %1. Ausführen: paperfold bench --output-dir %1</translation>
+    </message>
+    <message>
+        <source>Save Recording</source>
+        <translation>Aufzeichnung speichern</translation>
+    </message>
+    <message>
+        <source>PaperFold recordings (*.paperrec)</source>
+        <translation>PaperFold-Aufzeichnungen (*.paperrec)</translation>
+    </message>
+    <message>
+        <source>Save &amp;Recording…</source>
+        <translation>&amp;Aufzeichnung speichern…</translation>
+    </message>
+    <message>
+        <source>Save everything done since New or Open; paperfold replay does it again</source>
+        <translation>Alles seit Neu oder Öffnen Getane speichern; paperfold replay wiederholt es</translation>
+    </message>
+    <message>
+        <source>Could not save the recording: %1</source>
+        <translation>Die Aufzeichnung konnte nicht gespeichert werden: %1</translation>
     </message>
 </context>
 <context>
@@ -447,10 +463,6 @@
         <translation>Integrator</translation>
     </message>
     <message>
-        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
-        <translation>jacobi: der näherungsweise implizite Schritt des Artikels (Gl. 6); jacobi-scalar: derselbe mit k·I-Blöcken; symplectic: explizit; backward-euler: der exakte implizite Schritt (langsam, die Referenz).</translation>
-    </message>
-    <message>
         <source>Jacobi sweeps</source>
         <translation>Jacobi-Durchläufe</translation>
     </message>
@@ -485,6 +497,18 @@
     <message>
         <source>Show the newest speed–accuracy chart written by &apos;paperfold bench&apos;.</source>
         <translation>Das neueste Geschwindigkeits-Genauigkeits-Diagramm von „paperfold bench“ anzeigen.</translation>
+    </message>
+    <message>
+        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference); xpbd: paper from its physical constants (docs/material.md).</source>
+        <translation>jacobi: der näherungsweise implizite Schritt des Artikels (Gl. 6); jacobi-scalar: derselbe mit k·I-Blöcken; symplectic: explizit; backward-euler: der exakte implizite Schritt (langsam, die Referenz); xpbd: Papier aus seinen physikalischen Konstanten (docs/material.md).</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Papier</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s weight, stretch and bending stiffness and friction, used by the xpbd integrator: tissue 20 g/m², office 80 g/m², card 250 g/m².</source>
+        <translation>Gewicht, Dehn- und Biegesteifigkeit und Reibung des Papiers, vom xpbd-Integrator verwendet: Seidenpapier 20 g/m², Büropapier 80 g/m², Karton 250 g/m².</translation>
     </message>
 </context>
 <context>

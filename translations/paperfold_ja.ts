@@ -328,10 +328,6 @@
         <translation>画像を書き出せませんでした：%1</translation>
     </message>
     <message>
-        <source>Could not write %1</source>
-        <translation>%1 に書き込めませんでした</translation>
-    </message>
-    <message>
         <source>Choose a file ending in .obj, .ply or .glb</source>
         <translation>.obj、.ply、.glb で終わるファイルを選んでください</translation>
     </message>
@@ -362,6 +358,26 @@
     <message>
         <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
         <translation>%1 に bench_*.png がありません。次を実行してください：paperfold bench --output-dir %1</translation>
+    </message>
+    <message>
+        <source>Save Recording</source>
+        <translation>記録を保存</translation>
+    </message>
+    <message>
+        <source>PaperFold recordings (*.paperrec)</source>
+        <translation>PaperFold 記録 (*.paperrec)</translation>
+    </message>
+    <message>
+        <source>Save &amp;Recording…</source>
+        <translation>記録を保存(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Save everything done since New or Open; paperfold replay does it again</source>
+        <translation>新規または開く以降の操作をすべて保存します。paperfold replay で再現できます</translation>
+    </message>
+    <message>
+        <source>Could not save the recording: %1</source>
+        <translation>記録を保存できませんでした: %1</translation>
     </message>
 </context>
 <context>
@@ -446,10 +462,6 @@
         <translation>積分器</translation>
     </message>
     <message>
-        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
-        <translation>jacobi：論文の近似陰的ステップ（式6）、jacobi-scalar：k·I ブロックを使う同じ手法、symplectic：陽的、backward-euler：厳密な陰的ステップ（低速、基準）。</translation>
-    </message>
-    <message>
         <source>Jacobi sweeps</source>
         <translation>ヤコビ反復回数</translation>
     </message>
@@ -484,6 +496,18 @@
     <message>
         <source>Show the newest speed–accuracy chart written by &apos;paperfold bench&apos;.</source>
         <translation>「paperfold bench」が書き出した最新の速度と精度のグラフを表示します。</translation>
+    </message>
+    <message>
+        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference); xpbd: paper from its physical constants (docs/material.md).</source>
+        <translation>jacobi: 論文の近似陰的ステップ (式 6)。jacobi-scalar: k·I ブロックを用いた同じもの。symplectic: 陽的。backward-euler: 厳密な陰的ステップ (低速、基準)。xpbd: 物理定数に基づく紙 (docs/material.md)。</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>紙</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s weight, stretch and bending stiffness and friction, used by the xpbd integrator: tissue 20 g/m², office 80 g/m², card 250 g/m².</source>
+        <translation>xpbd 積分器が使う紙の重さ、伸び剛性、曲げ剛性、摩擦: ティッシュ 20 g/m²、コピー用紙 80 g/m²、厚紙 250 g/m²。</translation>
     </message>
 </context>
 <context>

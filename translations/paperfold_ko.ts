@@ -328,10 +328,6 @@
         <translation>이미지를 내보낼 수 없습니다: %1</translation>
     </message>
     <message>
-        <source>Could not write %1</source>
-        <translation>%1에 쓸 수 없습니다</translation>
-    </message>
-    <message>
         <source>Choose a file ending in .obj, .ply or .glb</source>
         <translation>.obj, .ply 또는 .glb로 끝나는 파일을 고르세요</translation>
     </message>
@@ -362,6 +358,26 @@
     <message>
         <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
         <translation>%1에 bench_*.png가 없습니다. 실행: paperfold bench --output-dir %1</translation>
+    </message>
+    <message>
+        <source>Save Recording</source>
+        <translation>기록 저장</translation>
+    </message>
+    <message>
+        <source>PaperFold recordings (*.paperrec)</source>
+        <translation>PaperFold 기록 (*.paperrec)</translation>
+    </message>
+    <message>
+        <source>Save &amp;Recording…</source>
+        <translation>기록 저장(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Save everything done since New or Open; paperfold replay does it again</source>
+        <translation>새로 만들기 또는 열기 이후의 모든 작업을 저장합니다. paperfold replay로 다시 실행할 수 있습니다</translation>
+    </message>
+    <message>
+        <source>Could not save the recording: %1</source>
+        <translation>기록을 저장할 수 없습니다: %1</translation>
     </message>
 </context>
 <context>
@@ -446,10 +462,6 @@
         <translation>적분기</translation>
     </message>
     <message>
-        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference).</source>
-        <translation>jacobi: 논문의 근사 암시적 단계(식 6), jacobi-scalar: k·I 블록을 쓰는 같은 방법, symplectic: 명시적, backward-euler: 정확한 암시적 단계(느림, 기준).</translation>
-    </message>
-    <message>
         <source>Jacobi sweeps</source>
         <translation>야코비 반복 횟수</translation>
     </message>
@@ -484,6 +496,18 @@
     <message>
         <source>Show the newest speed–accuracy chart written by &apos;paperfold bench&apos;.</source>
         <translation>&apos;paperfold bench&apos;가 만든 최신 속도-정확도 차트를 보여 줍니다.</translation>
+    </message>
+    <message>
+        <source>jacobi: the paper&apos;s approximate implicit step (Eq. 6); jacobi-scalar: the same with k·I blocks; symplectic: explicit; backward-euler: the exact implicit step (slow, the reference); xpbd: paper from its physical constants (docs/material.md).</source>
+        <translation>jacobi: 논문의 근사 암시적 단계 (식 6); jacobi-scalar: k·I 블록을 쓰는 같은 방법; symplectic: 명시적; backward-euler: 정확한 암시적 단계 (느림, 기준); xpbd: 물리 상수로 만든 종이 (docs/material.md).</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>종이</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s weight, stretch and bending stiffness and friction, used by the xpbd integrator: tissue 20 g/m², office 80 g/m², card 250 g/m².</source>
+        <translation>xpbd 적분기가 쓰는 종이의 무게, 늘임 강성, 굽힘 강성, 마찰: 티슈 20 g/m², 사무용지 80 g/m², 판지 250 g/m².</translation>
     </message>
 </context>
 <context>

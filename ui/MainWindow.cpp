@@ -4,6 +4,7 @@
 #include "OffscreenRenderer.h"
 #include "ParameterPanel.h"
 #include "PngFile.h"
+#include "RecordingFile.h"
 #include "Scenes.h"
 #include "SheetBuilder.h"
 #include "SheetFile.h"
@@ -87,6 +88,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         case FileDialog::ExportMesh:
             return QFileDialog::getSaveFileName(this, tr("Export Mesh"), QString(),
                                                 tr("Meshes (*.obj *.ply *.glb)"));
+        case FileDialog::SaveRecording:
+            return QFileDialog::getSaveFileName(this, tr("Save Recording"), QString(),
+                                                tr("PaperFold recordings (*.paperrec)"));
         }
         return QString();
     };
@@ -225,6 +229,10 @@ void MainWindow::createActions() {
         const QString path = chooseFile(FileDialog::Save);
         if (!path.isEmpty()) saveFile(path);
     });
+    connect(make("saveRecording"), &QAction::triggered, this, [this] {
+        const QString path = chooseFile(FileDialog::SaveRecording);
+        if (!path.isEmpty()) saveRecording(path);
+    });
     connect(make("exportImage", QKeySequence(tr("Ctrl+E"))), &QAction::triggered, this,
             &MainWindow::exportImage);
     connect(make("exportMesh", QKeySequence(tr("Ctrl+Shift+E"))), &QAction::triggered, this,
@@ -319,6 +327,7 @@ void MainWindow::createMenus() {
     recentMenu_ = fileMenu_->addMenu(QString());
     fileMenu_->addAction(action("save"));
     fileMenu_->addAction(action("saveAs"));
+    fileMenu_->addAction(action("saveRecording"));
     fileMenu_->addSeparator();
     fileMenu_->addAction(action("exportImage"));
     fileMenu_->addAction(action("exportMesh"));
@@ -390,6 +399,8 @@ void MainWindow::retranslate() {
     set("open", tr("&Open…"));
     set("save", tr("&Save"));
     set("saveAs", tr("Save &As…"));
+    set("saveRecording", tr("Save &Recording…"),
+        tr("Save everything done since New or Open; paperfold replay does it again"));
     set("exportImage", tr("Export &Image…"));
     set("exportMesh", tr("Export &Mesh…"));
     set("quit", tr("&Quit"));
@@ -546,22 +557,42 @@ bool MainWindow::openFile(const QString& path) {
     return true;
 }
 
-std::shared_ptr<const World> MainWindow::fetchWorld() {
+template <typename T, typename Reply, typename Request>
+std::shared_ptr<const T> MainWindow::awaitReply(Reply reply, Request request) {
     // Waits at most one simulation frame for the copy.
     const quint64 id = nextRequest_++;
-    std::shared_ptr<const World> result;
+    std::shared_ptr<const T> result;
     QEventLoop loop;
-    auto c = connect(sim_.get(), &SimulationThread::worldCopied, &loop,
-                     [&](quint64 got, std::shared_ptr<const World> w) {
-                         if (got != id) return;
-                         result = std::move(w);
-                         loop.quit();
-                     });
-    sim_->requestWorld(id);
+    auto c = connect(sim_.get(), reply, &loop, [&](quint64 got, std::shared_ptr<const T> copy) {
+        if (got != id) return;
+        result = std::move(copy);
+        loop.quit();
+    });
+    (sim_.get()->*request)(id);
     QTimer::singleShot(5000, &loop, &QEventLoop::quit);
     loop.exec(QEventLoop::ExcludeUserInputEvents);
     disconnect(c);
     return result;
+}
+
+std::shared_ptr<const World> MainWindow::fetchWorld() {
+    return awaitReply<World>(&SimulationThread::worldCopied, &SimulationThread::requestWorld);
+}
+
+std::shared_ptr<const EditLog> MainWindow::fetchRecording() {
+    return awaitReply<EditLog>(&SimulationThread::recordingCopied,
+                               &SimulationThread::requestRecording);
+}
+
+void MainWindow::saveRecording(const QString& path) {
+    const auto log = fetchRecording();
+    QString error;
+    if (!log || !pf::saveRecording(*log, path, &error)) {
+        showError(tr("Could not save the recording: %1")
+                      .arg(log ? error : tr("the simulation did not answer")));
+        return;
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 3000);
 }
 
 bool MainWindow::saveFile(const QString& path) {

@@ -24,6 +24,7 @@ class QUndoView;
 
 namespace pf {
 
+struct EditLog;
 class ParameterPanel;
 class SolverPanel;
 class SimulationThread;
@@ -39,7 +40,7 @@ class MainWindow : public QMainWindow {
     ~MainWindow() override;
 
     // Hooks the tests replace; by default they show dialogs.
-    enum class FileDialog { Open, Save, ExportImage, ExportMesh };
+    enum class FileDialog { Open, Save, ExportImage, ExportMesh, SaveRecording };
     std::function<QString(FileDialog)> chooseFile;
     std::function<void(const QString&)> showError;
     std::function<QMessageBox::StandardButton()> askToSave;
@@ -88,6 +89,10 @@ class MainWindow : public QMainWindow {
     void addRecent(const QString& path);
     bool maybeSave();
     std::shared_ptr<const World> fetchWorld();
+    std::shared_ptr<const EditLog> fetchRecording();
+    template <typename T, typename Reply, typename Request>
+    std::shared_ptr<const T> awaitReply(Reply reply, Request request);
+    void saveRecording(const QString& path);
     void fitCamera();
     void setView(const char* name);
     void pointTool(const QPoint& pixel, bool pressed);

@@ -9,6 +9,7 @@ namespace pf {
 
 SimulationThread::SimulationThread(World initial, QObject* parent) : QObject(parent) {
     qRegisterMetaType<std::shared_ptr<const World>>("std::shared_ptr<const World>");
+    qRegisterMetaType<std::shared_ptr<const EditLog>>("std::shared_ptr<const EditLog>");
     qRegisterMetaType<pf::SimParams>("pf::SimParams");
     worker_ = new SimulationWorker(std::move(initial), this);
     worker_->moveToThread(&thread_);
@@ -103,6 +104,9 @@ void SimulationThread::redoStroke(int stroke) {
 }
 void SimulationThread::requestWorld(quint64 requestId) {
     PF_POST(copyWorld(requestId));
+}
+void SimulationThread::requestRecording(quint64 requestId) {
+    PF_POST(copyRecording(requestId));
 }
 
 #undef PF_POST

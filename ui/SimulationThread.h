@@ -1,6 +1,7 @@
 #pragma once
 
 #include "CrossThreadQueue.h"
+#include "EditSession.h"
 #include "SheetSnapshot.h"
 #include "World.h"
 
@@ -50,6 +51,9 @@ class SimulationThread : public QObject {
     void redoStroke(int stroke);
     // Asks for a copy of the whole World; answered by worldCopied(requestId, ...).
     void requestWorld(quint64 requestId);
+    // Asks for the session since the last New or Open, as a recording; answered by
+    // recordingCopied(requestId, ...).
+    void requestRecording(quint64 requestId);
 
     // Waits until every command queued so far has been applied (tests and shutdown only).
     void sync();
@@ -61,6 +65,7 @@ class SimulationThread : public QObject {
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
     void worldCopied(quint64 requestId, std::shared_ptr<const World> world);
+    void recordingCopied(quint64 requestId, std::shared_ptr<const EditLog> log);
     // A replaceWorld was applied: the old World is gone and a snapshot of the new one
     // was published (its snapshotReady comes first).
     void worldReplaced();

@@ -86,6 +86,13 @@ void SimulationWorker::copyWorld(quint64 requestId) {
         });
 }
 
+void SimulationWorker::copyRecording(quint64 requestId) {
+    owner_->emitOnGuiThread(
+        [o = owner_, requestId, log = std::make_shared<const EditLog>(session_.log())] {
+            emit o->recordingCopied(requestId, log);
+        });
+}
+
 void SimulationWorker::advance(int steps) {
     if (session_.advance(steps) == StepStatus::Ok) return;
     playing_ = false;

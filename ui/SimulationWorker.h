@@ -30,6 +30,7 @@ class SimulationWorker : public QObject {
     void undoStroke(int stroke);
     void redoStroke(int stroke);
     void copyWorld(quint64 requestId);
+    void copyRecording(quint64 requestId);
 
     // Applies every command the GUI queued (SimulationThread::post).
     void runCommands();

@@ -1,5 +1,8 @@
-// Writes seed inputs for the fuzzers into three folders: valid sheets of each scene
-// (small and crumpled), reference PNGs of a few sizes and formats, and output names.
+// Writes seed inputs for the fuzzers into four folders: valid sheets of each scene
+// (small and crumpled), short recordings of editing sessions, reference PNGs of a few
+// sizes and formats, and output names.
+#include "RecordingFile.h"
+#include "SceneScript.h"
 #include "Scenes.h"
 #include "SheetFile.h"
 #include "Simulation.h"
@@ -20,7 +23,7 @@ bool writeFile(const QString& path, const QByteArray& bytes) {
 int main(int argc, char** argv) {
     if (argc != 2) return 2;
     const QDir root(QString::fromLocal8Bit(argv[1]));
-    for (const char* sub : {"sheets", "images", "patterns"})
+    for (const char* sub : {"sheets", "recordings", "images", "patterns"})
         if (!root.mkpath(QLatin1String(sub))) return 1;
     int n = 0;
     // Each scene with the paper's integrator, and with xpbd on a paper that yields
@@ -40,6 +43,28 @@ int main(int argc, char** argv) {
                            pf::encodeWorld(sim.world())))
                 return 1;
         }
+    // Short sessions (the fuzzer replays those of at most 32 steps) using every command.
+    n = 0;
+    for (const auto& name : pf::sceneNames()) {
+        pf::SceneOptions o;
+        o.resolution = 4;
+        pf::EditSession session(*pf::makeScene(name, o));
+        const auto& sphere = session.world().sphere;
+        session.setTool(sphere.center + pf::Vec3(0.01, -0.02, 0.0), 0.03, true, true);
+        session.advance(10);
+        session.setTool(sphere.center + pf::Vec3(0.03, -0.02, 0.0), 0.03, true, false);
+        session.undoStroke(0);
+        session.redoStroke(0);
+        pf::SimParams p = session.world().params;
+        p.phi = 0.3;
+        session.setParams(p);
+        session.setTool(sphere.center, 0.02, true, false);
+        session.placeToolAtTarget();
+        session.advance(10);
+        if (!writeFile(root.filePath(QStringLiteral("recordings/seed%1.paperrec").arg(n++)),
+                       pf::encodeRecording(session.log())))
+            return 1;
+    }
     n = 0;
     for (const QImage::Format format : {QImage::Format_RGB32, QImage::Format_ARGB32,
                                         QImage::Format_Grayscale8, QImage::Format_Indexed8}) {

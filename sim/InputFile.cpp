@@ -1,0 +1,41 @@
+#include "InputFile.h"
+
+#include <QFile>
+#include <cerrno>
+#include <sys/stat.h>
+#include <system_error>
+
+namespace pf {
+
+std::optional<QByteArray> readInputFile(const QString& path, qint64 maxBytes, QString* error) {
+    const QString notRegular =
+        QStringLiteral("%1 is not a regular file (a device, FIFO or folder)");
+    struct stat before {};
+    if (stat(QFile::encodeName(path).constData(), &before) == 0 && !S_ISREG(before.st_mode)) {
+        *error = notRegular.arg(path);
+        return std::nullopt;
+    }
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = QStringLiteral("cannot open %1: %2").arg(path, file.errorString());
+        return std::nullopt;
+    }
+    struct stat st {};
+    if (fstat(file.handle(), &st) != 0) {
+        *error = QStringLiteral("cannot open %1: %2")
+                     .arg(path, QString::fromStdString(
+                                    std::error_code(errno, std::generic_category()).message()));
+        return std::nullopt;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        *error = notRegular.arg(path);
+        return std::nullopt;
+    }
+    if (st.st_size > maxBytes) {
+        *error = QStringLiteral("%1 is larger than %2 MiB").arg(path).arg(maxBytes >> 20);
+        return std::nullopt;
+    }
+    return file.read(maxBytes + 1);
+}
+
+} // namespace pf

@@ -1,0 +1,199 @@
+#include "RecordingFile.h"
+
+#include "BoundedCbor.h"
+#include "InputFile.h"
+#include "OutputFile.h"
+#include "SheetFile.h"
+
+#include <QCborArray>
+#include <QCborMap>
+#include <QCborValue>
+#include <QtEndian>
+#include <cmath>
+#include <cstring>
+
+namespace pf {
+
+namespace {
+
+// One command: step i64, kind u8, flags u8 (1 visible, 2 pressed), 2 zero bytes, argument
+// i32 (the stroke of an undo or redo, the params entry of a change), target 3 × f64,
+// radius f64; little-endian.
+constexpr qsizetype kCommandBytes = 48;
+
+template <typename T> void put(QByteArray& out, T v) {
+    char b[sizeof(T)];
+    qToLittleEndian(v, b);
+    out.append(b, sizeof(T));
+}
+
+template <typename T> T take(const char* p) {
+    return qFromLittleEndian<T>(p);
+}
+
+double takeF64(const char* p) {
+    const std::uint64_t bits = take<std::uint64_t>(p);
+    double v;
+    std::memcpy(&v, &bits, sizeof v);
+    return v;
+}
+
+void putF64(QByteArray& out, double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof v);
+    put(out, bits);
+}
+
+const CborBounds& recordingBounds() {
+    static const CborBounds bounds = [] {
+        CborBounds b;
+        for (const char* key : {"magic", "version", "start", "toolTarget", "pressed", "endStep",
+                                "commands", "params"})
+            b.knownKeys.insert(QLatin1String(key));
+        b.maxDepth = 3;
+        b.maxValues = kMaxRecordedParams + 64;
+        return b;
+    }();
+    return bounds;
+}
+
+bool finiteWithin(double v, double limit) {
+    return std::isfinite(v) && std::abs(v) <= limit;
+}
+
+} // namespace
+
+QByteArray encodeRecording(const EditLog& log) {
+    QCborMap root;
+    root[QLatin1String("magic")] = QLatin1String(kRecordingMagic);
+    root[QLatin1String("version")] = kRecordingVersion;
+    root[QLatin1String("start")] = encodeWorld(log.start);
+    QByteArray target;
+    for (int k = 0; k < 3; ++k) putF64(target, log.toolTarget[k]);
+    root[QLatin1String("toolTarget")] = target;
+    root[QLatin1String("pressed")] = log.pressed;
+    root[QLatin1String("endStep")] = static_cast<qint64>(log.endStep);
+    QByteArray commands;
+    commands.reserve(static_cast<qsizetype>(log.commands.size()) * kCommandBytes);
+    QCborArray params;
+    for (const EditCommand& c : log.commands) {
+        std::int32_t argument = c.stroke;
+        if (c.kind == EditCommand::Kind::Params) {
+            argument = static_cast<std::int32_t>(params.size());
+            params.append(encodeParams(*c.params));
+        }
+        put<std::int64_t>(commands, c.step);
+        put<std::uint8_t>(commands, static_cast<std::uint8_t>(c.kind));
+        put<std::uint8_t>(commands, (c.visible ? 1 : 0) | (c.pressed ? 2 : 0));
+        put<std::uint16_t>(commands, 0);
+        put<std::int32_t>(commands, argument);
+        for (int k = 0; k < 3; ++k) putF64(commands, c.target[k]);
+        putF64(commands, c.radius);
+    }
+    root[QLatin1String("commands")] = commands;
+    root[QLatin1String("params")] = params;
+    return root.toCborValue().toCbor();
+}
+
+RecordingLoad decodeRecording(const QByteArray& bytes) {
+    QString error;
+    const std::optional<QCborValue> parsed = parseBoundedCbor(bytes, recordingBounds(), &error);
+    if (!parsed) return {std::nullopt, error};
+    if (!parsed->isMap()) return {std::nullopt, QStringLiteral("not a PaperFold recording")};
+    const QCborMap root = parsed->toMap();
+    auto bad = [](const QString& what) { return RecordingLoad{std::nullopt, what}; };
+    if (root.value(QLatin1String("magic")).toString() != QLatin1String(kRecordingMagic))
+        return bad(QStringLiteral("not a PaperFold recording (wrong magic)"));
+    const QCborValue version = root.value(QLatin1String("version"));
+    if (!version.isInteger() || version.toInteger() != kRecordingVersion)
+        return bad(QStringLiteral("unsupported recording version (this build reads version %1)")
+                       .arg(kRecordingVersion));
+    const QCborValue start = root.value(QLatin1String("start"));
+    if (!start.isByteArray()) return bad(QStringLiteral("recording.start: missing"));
+    WorldLoad world = decodeWorld(start.toByteArray());
+    if (!world.world) return bad(QStringLiteral("recording.start: %1").arg(world.error));
+
+    EditLog log;
+    log.start = std::move(*world.world);
+    const QByteArray target = root.value(QLatin1String("toolTarget")).toByteArray();
+    if (target.size() != 24) return bad(QStringLiteral("recording.toolTarget: not 3 numbers"));
+    for (int k = 0; k < 3; ++k) log.toolTarget[k] = takeF64(target.constData() + 8 * k);
+    if (!finiteWithin(log.toolTarget.norm(), kDivergenceRadius))
+        return bad(QStringLiteral("recording.toolTarget: not a finite point near the sheet"));
+    const QCborValue pressed = root.value(QLatin1String("pressed"));
+    if (!pressed.isBool()) return bad(QStringLiteral("recording.pressed: not true or false"));
+    log.pressed = pressed.toBool();
+    const QCborValue end = root.value(QLatin1String("endStep"));
+    if (!end.isInteger() || end.toInteger() < log.start.stepCount ||
+        end.toInteger() > log.start.stepCount + (qint64(1) << 40))
+        return bad(QStringLiteral("recording.endStep: not a step at or after the start's"));
+    log.endStep = end.toInteger();
+
+    const QCborValue paramsValue = root.value(QLatin1String("params"));
+    if (!paramsValue.isArray()) return bad(QStringLiteral("recording.params: missing"));
+    std::vector<std::shared_ptr<const SimParams>> params;
+    for (const QCborValue& p : paramsValue.toArray()) {
+        if (!p.isByteArray()) return bad(QStringLiteral("recording.params: not encoded params"));
+        std::optional<SimParams> decoded = decodeParams(p.toByteArray(), &error);
+        if (!decoded)
+            return bad(QStringLiteral("recording.params[%1]: %2").arg(params.size()).arg(error));
+        params.push_back(std::make_shared<const SimParams>(std::move(*decoded)));
+    }
+
+    const QByteArray commands = root.value(QLatin1String("commands")).toByteArray();
+    if (commands.size() % kCommandBytes != 0 ||
+        commands.size() / kCommandBytes > kMaxRecordedCommands)
+        return bad(QStringLiteral("recording.commands: not whole commands of %1 bytes")
+                       .arg(kCommandBytes));
+    log.commands.reserve(static_cast<std::size_t>(commands.size() / kCommandBytes));
+    std::int64_t lastStep = log.start.stepCount;
+    for (qsizetype offset = 0; offset < commands.size(); offset += kCommandBytes) {
+        const char* p = commands.constData() + offset;
+        const QString where = QStringLiteral("recording.commands[%1]").arg(offset / kCommandBytes);
+        EditCommand c;
+        c.step = take<std::int64_t>(p);
+        if (c.step < lastStep || c.step > log.endStep)
+            return bad(where + QStringLiteral(": step out of order"));
+        lastStep = c.step;
+        const auto kind = take<std::uint8_t>(p + 8);
+        const auto flags = take<std::uint8_t>(p + 9);
+        if (kind < 1 || kind > 5) return bad(where + QStringLiteral(": unknown command"));
+        if (flags > 3 || take<std::uint16_t>(p + 10) != 0)
+            return bad(where + QStringLiteral(": unknown flags"));
+        c.kind = static_cast<EditCommand::Kind>(kind);
+        c.visible = flags & 1;
+        c.pressed = flags & 2;
+        const std::int32_t argument = take<std::int32_t>(p + 12);
+        for (int k = 0; k < 3; ++k) c.target[k] = takeF64(p + 16 + 8 * k);
+        c.radius = takeF64(p + 40);
+        if (!finiteWithin(c.target.norm(), kDivergenceRadius) || !(c.radius >= 0.0) ||
+            !(c.radius <= 1.0))
+            return bad(where + QStringLiteral(": tool outside the scene"));
+        if (c.kind == EditCommand::Kind::Params) {
+            if (argument < 0 || argument >= static_cast<std::int32_t>(params.size()))
+                return bad(where + QStringLiteral(": no such parameter change"));
+            c.params = params[static_cast<std::size_t>(argument)];
+        } else {
+            // An undo of a stroke that does not exist does nothing, as in the editor.
+            c.stroke = argument;
+        }
+        log.commands.push_back(std::move(c));
+    }
+    return {std::move(log), {}};
+}
+
+bool saveRecording(const EditLog& log, const QString& path, QString* error,
+                   const QStringList& inputs) {
+    return writeOutputFile(path, encodeRecording(log), error, inputs);
+}
+
+RecordingLoad loadRecording(const QString& path) {
+    QString error;
+    const std::optional<QByteArray> bytes = readInputFile(path, kMaxRecordingBytes, &error);
+    if (!bytes) return {std::nullopt, error};
+    RecordingLoad load = decodeRecording(*bytes);
+    if (!load.log) load.error = QStringLiteral("%1: %2").arg(path, load.error);
+    return load;
+}
+
+} // namespace pf
