@@ -106,35 +106,67 @@ std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, d
     sphere.radius = radius;
     if (visible && !sphere.active) sphere.center = target; // appears where the cursor is
     sphere.active = visible;
-    if (pressed && !pressed_) strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
+    if (pressed && !pressed_) {
+        strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
+        pressedLook_ = look();
+    }
     const bool released = pressed_ && !pressed;
     pressed_ = pressed;
     return released ? endStroke() : std::nullopt;
 }
 
+EditSession::SheetLook EditSession::look() const {
+    const Sheet& s = sim_.world().sheet;
+    return {s.verts.x, s.verts.v, s.paper};
+}
+
+bool EditSession::restore(const SheetLook& look) {
+    Sheet& s = sim_.world().sheet;
+    if (look.x.size() != static_cast<std::size_t>(s.verts.size())) return false;
+    s.verts.x = look.x;
+    s.verts.v = look.v;
+    s.paper = look.paper;
+    sim_.restartIntegrator();
+    return true;
+}
+
 std::optional<EditSession::StrokeEnd> EditSession::endStroke() {
     const Sheet& s = sim_.world().sheet;
-    std::vector<StrokeEvent> events;
+    Stroke stroke;
+    stroke.firstEvent = strokeStart_;
     for (Index e = strokeStart_; e < static_cast<Index>(s.events.size()); ++e) {
         const DamageEvent& ev = s.events[e];
         if (!ev.active) continue;
         StrokeEvent se{e, ev.kind, ev.edge, 0.0};
         if (ev.kind == EventKind::Hinge) se.hingeRest = s.springs.rest[ev.springs[0]];
-        events.push_back(se);
+        stroke.events.push_back(se);
     }
-    if (events.empty()) return std::nullopt;
-    strokes_.push_back(std::move(events));
+    bool moved = stroke.events.size() > 0 || pressedLook_.x.size() != s.verts.x.size();
+    for (std::size_t i = 0; !moved && i < pressedLook_.x.size(); ++i)
+        moved = (s.verts.x[i] - pressedLook_.x[i]).squaredNorm() > kStrokeMoves * kStrokeMoves;
+    if (!moved) return std::nullopt;
+    stroke.before = std::move(pressedLook_);
+    stroke.after = look();
+    pressedLook_ = {};
+    strokes_.push_back(std::move(stroke));
     return StrokeEnd{static_cast<int>(strokes_.size()) - 1,
-                     static_cast<int>(strokes_.back().size())};
+                     static_cast<int>(strokes_.back().events.size())};
 }
 
 std::optional<int> EditSession::undoStroke(int stroke) {
     record({EditCommand::Kind::Undo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr});
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
+    const Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
+    Sheet& s = sim_.world().sheet;
     int recovered = 0;
-    auto& events = strokes_[static_cast<std::size_t>(stroke)];
-    for (auto it = events.rbegin(); it != events.rend(); ++it)
-        recovered += recoverEvent(sim_.world().sheet, it->event) ? 1 : 0;
+    bool all = true;
+    for (Index e = static_cast<Index>(s.events.size()) - 1; e >= st.firstEvent; --e) {
+        if (!s.events[e].active) continue;
+        const bool ok = recoverEvent(s, e);
+        recovered += ok ? 1 : 0;
+        all = all && ok;
+    }
+    if (all) restore(st.before);
     return recovered;
 }
 
@@ -143,9 +175,11 @@ std::optional<int> EditSession::redoStroke(int stroke) {
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
     World& w = sim_.world();
     Sheet& s = w.sheet;
+    Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
+    st.firstEvent = static_cast<Index>(s.events.size());
     int reapplied = 0;
     std::vector<Vec3> normals;
-    for (StrokeEvent& se : strokes_[static_cast<std::size_t>(stroke)]) {
+    for (StrokeEvent& se : st.events) {
         // Undone in reverse order, the edges have their old ids again.
         if (se.edge < 0 || se.edge >= s.springs.size()) continue;
         if (se.kind == EventKind::Break) {
@@ -158,6 +192,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         }
         ++reapplied;
     }
+    if (reapplied == static_cast<int>(st.events.size())) restore(st.after);
     return reapplied;
 }
 

@@ -59,9 +59,17 @@ class EditSession {
         int events = 0; // breaks and hinges it made
     };
     // Moves the tool's target; a release ends the stroke, which is returned when it
-    // made any damage (a stroke without damage has nothing to undo).
+    // changed the sheet (broke or hinged something, or moved it by more than
+    // kStrokeMoves); a stroke that changed nothing has nothing to undo.
     std::optional<StrokeEnd> setTool(const Vec3& target, double radius, bool visible, bool pressed);
-    // The number of damage events recovered (or done again); nothing for an unknown stroke.
+    static constexpr double kStrokeMoves = 1e-4; // m
+
+    // Undo recovers (§4.2), newest first, every break and hinge since the stroke began —
+    // its own and those the sheet made settling after it — and, when all came back, gives
+    // back the sheet as it was when the stroke began: positions, velocities, plastic folds.
+    // Redo does the damage again and gives back the sheet as it was when the stroke
+    // ended. Returns the number of damage events recovered (or done again); nothing for
+    // an unknown stroke.
     std::optional<int> undoStroke(int stroke);
     std::optional<int> redoStroke(int stroke);
 
@@ -86,6 +94,19 @@ class EditSession {
         Index edge = kNone;
         double hingeRest = 0.0;
     };
+    // What the user saw: the sheet's motion state (its topology is the events' job).
+    struct SheetLook {
+        std::vector<Vec3> x, v;
+        PaperState paper;
+    };
+    struct Stroke {
+        Index firstEvent = 0; // the damage log's length when it began (or was redone)
+        std::vector<StrokeEvent> events;
+        SheetLook before, after;
+    };
+    SheetLook look() const;
+    // Gives back `look` if the sheet has the same vertices again; false otherwise.
+    bool restore(const SheetLook& look);
     std::optional<StrokeEnd> endStroke();
     void beginLog();
     void record(EditCommand command);
@@ -94,8 +115,9 @@ class EditSession {
     Vec3 toolTarget_ = Vec3::Zero();
     bool pressed_ = false;
     Index strokeStart_ = 0;
-    std::vector<std::vector<StrokeEvent>> strokes_;
-    EditLog log_; // endStep is filled in by log()
+    std::vector<Stroke> strokes_;
+    SheetLook pressedLook_; // the sheet when the current stroke began
+    EditLog log_;           // endStep is filled in by log()
 };
 
 // Does `log` again from its start: steps to each command's step, applies it, and steps

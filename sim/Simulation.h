@@ -33,6 +33,10 @@ class Simulation {
 
     StepStatus step();
 
+    // The sheet's state was set from outside (an undo giving back what the user saw): the
+    // integrator starts afresh from it, as after loading a file.
+    void restartIntegrator() { setIntegrator(integratorName_); }
+
     World& world() { return world_; }
     const World& world() const { return world_; }
 

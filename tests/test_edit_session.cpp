@@ -117,14 +117,58 @@ class TestEditSession : public QObject {
         QCOMPARE(session.world().stepCount, step);
     }
 
-    void aStrokeWithoutDamageHasNothingToUndo() {
+    void aStrokeThatChangedNothingHasNothingToUndo() {
+        // The button held with the tool 10 cm above the sheet: nothing to give back.
+        EditSession session(*makeScene("press"));
+        const Vec3 above(0.0, 0.1, 0.0);
+        session.setTool(above, 0.02, true, false);
+        session.placeToolAtTarget();
+        session.setTool(above, 0.02, true, true);
+        QCOMPARE(session.advance(20), StepStatus::Ok);
+        QVERIFY(!session.setTool(above + Vec3(0.01, 0.0, 0.0), 0.02, true, false).has_value());
+        QVERIFY(!session.undoStroke(0).has_value());
+        QVERIFY(!session.redoStroke(-1).has_value());
+    }
+
+    void undoGivesBackTheSheetAsItWasBeforeTheStroke() {
+        // With breaking off the push only moves the paper: still one undo step, and undo
+        // puts every vertex back where it was when the button went down.
         World w = *makeScene("press");
         w.params.breaking = false;
         w.params.hinges = false;
         EditSession session(w);
-        QVERIFY(!pushStroke(session, 0.0, 0.6).has_value());
-        QVERIFY(!session.undoStroke(0).has_value());
-        QVERIFY(!session.redoStroke(-1).has_value());
+        QCOMPARE(session.advance(24), StepStatus::Ok);
+        const std::vector<Vec3> before = session.world().sheet.verts.x;
+        const auto end = pushStroke(session, 0.0, 0.6);
+        QVERIFY(end.has_value());
+        QCOMPARE(end->events, 0);
+        const std::vector<Vec3> after = session.world().sheet.verts.x;
+        QCOMPARE(session.advance(60), StepStatus::Ok); // the paper settles meanwhile
+        QCOMPARE(session.undoStroke(end->stroke), std::optional<int>(0));
+        QVERIFY(session.world().sheet.verts.x == before);
+        QCOMPARE(session.redoStroke(end->stroke), std::optional<int>(0));
+        QVERIFY(session.world().sheet.verts.x == after);
+    }
+
+    void undoOfAStrokeThatBrokeTheSheetGivesBackItsLook() {
+        EditSession session(*makeScene("press"));
+        QCOMPARE(session.advance(24), StepStatus::Ok);
+        const Sheet before = session.world().sheet;
+        const auto end = pushStroke(session, 0.0, 0.6);
+        QVERIFY(end.has_value() && end->events > 0);
+        const Sheet after = session.world().sheet;
+        QCOMPARE(session.advance(60), StepStatus::Ok);
+        // Its own breaks and those the sheet made settling afterwards.
+        const auto recovered = session.undoStroke(end->stroke);
+        QVERIFY(recovered.has_value() && *recovered >= end->events);
+        const Sheet& undone = session.world().sheet;
+        QCOMPARE(topology(undone), topology(before));
+        QVERIFY(undone.verts.x == before.verts.x);
+        QVERIFY(undone.verts.v == before.verts.v);
+        QVERIFY(undone.springs.rest == before.springs.rest);
+        QCOMPARE(session.redoStroke(end->stroke), std::optional<int>(end->events));
+        QCOMPARE(topology(session.world().sheet), topology(after));
+        QVERIFY(session.world().sheet.verts.x == after.verts.x);
     }
 
     void undoAndRedoOfStrokesInAnyOrderKeepAValidMesh() {
@@ -159,7 +203,7 @@ class TestEditSession : public QObject {
             const int k = int(rng() % 3);
             const auto n = done[k] ? session.undoStroke(k) : session.redoStroke(k);
             QVERIFY(n.has_value());
-            QVERIFY(*n >= 0 && *n <= strokes[k].events);
+            QVERIFY(*n >= 0);
             done[k] = !done[k];
             QCOMPARE(session.advance(2), StepStatus::Ok);
             QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
@@ -205,7 +249,7 @@ class TestEditSession : public QObject {
         // same commit; anything else that changes it is a bug.
         EditSession session(*makeScene("press"));
         scriptedSession(session);
-        QCOMPARE(hex(stateHash(session.world().sheet)), QStringLiteral("18b2490866b20aa8"));
+        QCOMPARE(hex(stateHash(session.world().sheet)), QStringLiteral("45dc0cf57d798445"));
     }
 
     void aNewSheetStartsANewRecording() {

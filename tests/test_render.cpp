@@ -7,9 +7,12 @@
 //
 // Regenerate on purpose with PAPERFOLD_REGENERATE_BASELINES=1: the images are
 // rewritten into tests/baselines/ and the comparison is skipped for that run.
+#include "EditSession.h"
 #include "ImageCompare.h"
 #include "OffscreenRenderer.h"
 #include "RenderCases.h"
+#include "SceneScript.h"
+#include "Scenes.h"
 
 #include <QDir>
 #include <QtTest>
@@ -73,6 +76,48 @@ class TestRender : public QObject {
                  qPrintable(QStringLiteral("%1 % of pixels differ; see %2.*.png")
                                 .arg(100 * d.differingFraction)
                                 .arg(QDir::temp().filePath(c.name))));
+    }
+
+    void undoGivesBackThePictureTheUserSawBeforeTheStroke() {
+        // A push stroke along the press path crumples the sheet; the paper settles for a
+        // second; Undo must show the sheet as it was when the button went down (within the
+        // baselines' tolerance), and Redo the sheet as the stroke left it.
+        EditSession session(*makeScene("press"));
+        QCOMPARE(session.advance(24), StepStatus::Ok);
+        const auto path = makeScene("press")->script.sphereKeys;
+        const double radius = session.world().sphere.radius;
+        RenderOptions options;
+        options.sphere = false; // the tool is where the cursor is, not part of the sheet
+        options.legend = false;
+        const OrbitCamera camera = [&] {
+            OrbitCamera c = *namedView("iso");
+            c.fitPoints(session.world().sheet.verts.x, double(kWidth) / kHeight);
+            return c;
+        }();
+        auto picture = [&] {
+            return renderer->render(makeSnapshot(session.world()), camera, options);
+        };
+        const QImage before = picture();
+        std::optional<EditSession::StrokeEnd> end;
+        session.setTool(spherePathAt(path, 0.0), radius, true, true);
+        for (double t = 0.0; t < 0.6; t += 1.0 / 60.0) {
+            session.setTool(spherePathAt(path, t), radius, true, true);
+            QCOMPARE(session.advance(4), StepStatus::Ok);
+        }
+        end = session.setTool(spherePathAt(path, 0.6), radius, true, false);
+        QVERIFY(end.has_value() && end->events > 0);
+        const QImage afterStroke = picture();
+        QCOMPARE(session.advance(240), StepStatus::Ok);
+        const double strokeChanged = compareImages(before, afterStroke).differingFraction;
+        qInfo("the stroke changed %.1f %% of the pixels", 100 * strokeChanged);
+        QVERIFY(strokeChanged > 0.02);
+
+        QVERIFY(session.undoStroke(end->stroke).has_value());
+        const double undoLeft = compareImages(before, picture()).differingFraction;
+        qInfo("after undo %.3f %% of the pixels differ from before the stroke", 100 * undoLeft);
+        QVERIFY(undoLeft <= kThreshold);
+        QVERIFY(session.redoStroke(end->stroke).has_value());
+        QVERIFY(compareImages(afterStroke, picture()).differingFraction <= kThreshold);
     }
 
     void renderingIsDeterministic() {
