@@ -149,6 +149,11 @@ std::optional<EditSession::StrokeEnd> EditSession::endStroke() {
     stroke.after = look();
     pressedLook_ = {};
     strokes_.push_back(std::move(stroke));
+    if (strokes_.size() > kStrokesWithLook) {
+        Stroke& old = strokes_[strokes_.size() - 1 - kStrokesWithLook];
+        old.before = {};
+        old.after = {};
+    }
     return StrokeEnd{static_cast<int>(strokes_.size()) - 1,
                      static_cast<int>(strokes_.back().events.size())};
 }

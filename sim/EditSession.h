@@ -63,6 +63,9 @@ class EditSession {
     // kStrokeMoves); a stroke that changed nothing has nothing to undo.
     std::optional<StrokeEnd> setTool(const Vec3& target, double radius, bool visible, bool pressed);
     static constexpr double kStrokeMoves = 1e-4; // m
+    // Strokes further back than this are undone by recovery alone, without their sheet
+    // states (two copies of every vertex's position and velocity per stroke).
+    static constexpr std::size_t kStrokesWithLook = 100;
 
     // Undo recovers (§4.2), newest first, every break and hinge since the stroke began —
     // its own and those the sheet made settling after it — and, when all came back, gives

@@ -150,6 +150,27 @@ class TestEditSession : public QObject {
         QVERIFY(session.world().sheet.verts.x == after);
     }
 
+    void onlyTheNewestStrokesKeepTheirSheetStates() {
+        // Each stroke here lifts vertex 0 by 1 mm (as a push would move it).
+        World w = *makeScene("press");
+        EditSession session(w);
+        const Vec3 above(0.0, 0.2, 0.0);
+        const int count = int(EditSession::kStrokesWithLook) + 1;
+        for (int k = 0; k < count; ++k) {
+            session.setTool(above, 0.02, true, true);
+            session.simulation().world().sheet.verts.x[0].y() += 0.001;
+            QVERIFY(session.setTool(above, 0.02, true, false).has_value());
+        }
+        const double top = session.world().sheet.verts.x[0].y();
+        // The newest gives its sheet back; the oldest, beyond the limit, only its damage.
+        session.undoStroke(count - 1);
+        QCOMPARE(session.world().sheet.verts.x[0].y(), top - 0.001);
+        session.undoStroke(0);
+        QCOMPARE(session.world().sheet.verts.x[0].y(), top - 0.001);
+        session.undoStroke(1);
+        QCOMPARE(session.world().sheet.verts.x[0].y(), w.sheet.verts.x[0].y() + 0.001);
+    }
+
     void undoOfAStrokeThatBrokeTheSheetGivesBackItsLook() {
         EditSession session(*makeScene("press"));
         QCOMPARE(session.advance(24), StepStatus::Ok);
