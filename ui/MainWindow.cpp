@@ -14,6 +14,7 @@
 #include "SurfaceExport.h"
 #include "UndoCommands.h"
 #include "Viewport.h"
+#include "ViewportInput.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -52,8 +53,6 @@ namespace pf {
 namespace {
 
 constexpr int kMaxRecent = 8;
-// How far a pressed tool reaches into the paper, as a share of its radius.
-constexpr double kPushDepth = 0.6;
 
 const char* const kOverlayActions[] = {"overlay.springs", "overlay.probability", "overlay.strain",
                                        "overlay.breaks", "overlay.wireframe"};
@@ -71,7 +70,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     viewport_ = new Viewport(this);
     viewport_->setMouseTracking(true);
     viewport_->setFocusPolicy(Qt::StrongFocus);
-    viewport_->installEventFilter(this);
+    input_ = new ViewportInput(viewport_, sim_.get(), this);
     setCentralWidget(viewport_);
     undo_ = new QUndoStack(this);
 
@@ -123,7 +122,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     statusBar()->addPermanentWidget(countsLabel_);
     panel_->showParams(params_);
     solver_->showParams(params_);
-    panel_->setToolRadius(toolRadius_);
+    panel_->setToolRadius(input_->toolRadius());
 
     connect(sim_.get(), &SimulationThread::snapshotReady, this, &MainWindow::onSnapshot);
     // After New/Open the crumpled sheet, its snapshots and the renderer's buffers for it
@@ -153,10 +152,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(solver_, &SolverPanel::openChartRequested, this, &MainWindow::openLatestChart);
     chartFolder =
         QSettings().value(QStringLiteral("bench/folder"), QStringLiteral("bench")).toString();
-    connect(panel_, &ParameterPanel::toolRadiusChanged, this, [this](double r) {
-        toolRadius_ = r;
-        sim_->setTool(toolTarget_, toolRadius_, true, toolPressed_);
-    });
+    connect(panel_, &ParameterPanel::toolRadiusChanged, input_, &ViewportInput::setToolRadius);
+    connect(input_, &ViewportInput::toolRadiusChanged, panel_, &ParameterPanel::setToolRadius);
 
     retranslate();
     QSettings settings;
@@ -196,7 +193,7 @@ World MainWindow::sceneWorld(const QString& scene) const {
     w.script.sphereKeys.clear();
     // The solver lab's fix: the paper's step would let a hanging sheet fall at 0.4 % of g.
     w.params.gravityOutsideFilter = true;
-    w.sphere.radius = toolRadius_;
+    w.sphere.radius = input_ ? input_->toolRadius() : ViewportInput::kDefaultToolRadius;
     w.sphere.active = false;
     return w;
 }
@@ -286,13 +283,13 @@ void MainWindow::createActions() {
         });
     }
     connect(make("view.top", QKeySequence(Qt::Key_1)), &QAction::triggered, this,
-            [this] { setView("top"); });
+            [this] { input_->setView("top"); });
     connect(make("view.front", QKeySequence(Qt::Key_2)), &QAction::triggered, this,
-            [this] { setView("front"); });
+            [this] { input_->setView("front"); });
     connect(make("view.iso", QKeySequence(Qt::Key_3)), &QAction::triggered, this,
-            [this] { setView("iso"); });
+            [this] { input_->setView("iso"); });
     connect(make("view.fit", QKeySequence(Qt::Key_F)), &QAction::triggered, this,
-            &MainWindow::fitCamera);
+            [this] { input_->fitCamera(); });
     connect(make("help", QKeySequence::HelpContents), &QAction::triggered, this,
             &MainWindow::showHelp);
     connect(make("about"), &QAction::triggered, this, [this] {
@@ -474,7 +471,7 @@ void MainWindow::onSnapshot() {
     viewport_->setSnapshot(snap);
     if (firstSnapshot_) {
         firstSnapshot_ = false;
-        fitCamera();
+        input_->fitCamera();
     }
     const SimulationStatus st = sim_->status();
     lastStep_ = st.step;
@@ -660,119 +657,12 @@ void MainWindow::updateRecentMenu() {
     recentMenu_->setEnabled(!recent.isEmpty());
 }
 
-void MainWindow::fitCamera() {
-    auto snap = viewport_->snapshot();
-    if (!snap || snap->x.empty()) return;
-    OrbitCamera c = viewport_->camera();
-    c.fitPoints(snap->x,
-                double(std::max(1, viewport_->width())) / std::max(1, viewport_->height()));
-    viewport_->setCamera(c);
+Vec3 MainWindow::toolTarget() const {
+    return input_->toolTarget();
 }
 
-void MainWindow::setView(const char* name) {
-    OrbitCamera c = namedView(name).value();
-    const OrbitCamera& now = viewport_->camera();
-    c.target = now.target;
-    c.distance = now.distance;
-    viewport_->setCamera(c);
-}
-
-void MainWindow::pointTool(const QPoint& pixel, bool pressed) {
-    auto snap = viewport_->snapshot();
-    if (!snap) return;
-    const OrbitCamera::Ray ray = viewport_->camera().rayThroughPixel(
-        pixel.x() + 0.5, pixel.y() + 0.5, viewport_->width(), viewport_->height());
-    const auto hit = pickSheet(*snap, ray);
-    if (!hit) return;
-    toolTarget_ = toolCenter(*hit, toolRadius_, pressed ? kPushDepth * toolRadius_ : 0.0);
-    toolPressed_ = pressed;
-    sim_->setTool(toolTarget_, toolRadius_, true, pressed);
-}
-
-void MainWindow::hideTool() {
-    toolPressed_ = false;
-    sim_->setTool(toolTarget_, toolRadius_, false, false);
-}
-
-bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
-    if (watched != viewport_) return QMainWindow::eventFilter(watched, event);
-    switch (event->type()) {
-    case QEvent::MouseButtonPress:
-    case QEvent::MouseMove:
-    case QEvent::MouseButtonRelease: {
-        auto* e = static_cast<QMouseEvent*>(event);
-        const QPoint pos = e->position().toPoint();
-        const QPoint delta = pos - lastMouse_;
-        lastMouse_ = pos;
-        if (event->type() == QEvent::MouseMove && (e->buttons() & Qt::RightButton) &&
-            !(e->modifiers() & Qt::ShiftModifier)) {
-            OrbitCamera c = viewport_->camera();
-            c.orbit(-0.4 * delta.x(), 0.4 * delta.y());
-            viewport_->setCamera(c);
-            return true;
-        }
-        if (event->type() == QEvent::MouseMove &&
-            ((e->buttons() & Qt::MiddleButton) ||
-             ((e->buttons() & Qt::RightButton) && (e->modifiers() & Qt::ShiftModifier)))) {
-            OrbitCamera c = viewport_->camera();
-            c.pan(-double(delta.x()) / viewport_->height(),
-                  double(delta.y()) / viewport_->height());
-            viewport_->setCamera(c);
-            return true;
-        }
-        const bool left = e->buttons() & Qt::LeftButton;
-        pointTool(pos, left);
-        return true;
-    }
-    case QEvent::Wheel: {
-        auto* e = static_cast<QWheelEvent*>(event);
-        const double notches = e->angleDelta().y() / 120.0;
-        if (e->modifiers() & Qt::ControlModifier) {
-            toolRadius_ = std::clamp(toolRadius_ * std::pow(1.1, notches), 0.01, 0.10);
-            panel_->setToolRadius(toolRadius_);
-            sim_->setTool(toolTarget_, toolRadius_, true, toolPressed_);
-        } else {
-            OrbitCamera c = viewport_->camera();
-            c.zoom(std::pow(0.9, notches));
-            viewport_->setCamera(c);
-        }
-        return true;
-    }
-    case QEvent::Leave:
-        hideTool();
-        return false;
-    case QEvent::KeyPress: {
-        auto* e = static_cast<QKeyEvent*>(event);
-        OrbitCamera c = viewport_->camera();
-        switch (e->key()) {
-        case Qt::Key_Left:
-            c.orbit(-5, 0);
-            break;
-        case Qt::Key_Right:
-            c.orbit(5, 0);
-            break;
-        case Qt::Key_Up:
-            c.orbit(0, 5);
-            break;
-        case Qt::Key_Down:
-            c.orbit(0, -5);
-            break;
-        case Qt::Key_Plus:
-        case Qt::Key_Equal:
-            c.zoom(0.9);
-            break;
-        case Qt::Key_Minus:
-            c.zoom(1.0 / 0.9);
-            break;
-        default:
-            return false;
-        }
-        viewport_->setCamera(c);
-        return true;
-    }
-    default:
-        return false;
-    }
+bool MainWindow::toolPressed() const {
+    return input_->toolPressed();
 }
 
 void MainWindow::exportImage() {

@@ -29,6 +29,7 @@ class ParameterPanel;
 class SolverPanel;
 class SimulationThread;
 class Viewport;
+class ViewportInput;
 
 // The editor: viewport, parameter panel, undo history, menus, toolbar, status bar.
 // It only talks to the simulation through SimulationThread.
@@ -62,8 +63,8 @@ class MainWindow : public QMainWindow {
     QString currentFile() const { return file_; }
     bool isModified() const;
     // The last tool pose sent to the simulation (target centre, radius, pressed).
-    Vec3 toolTarget() const { return toolTarget_; }
-    bool toolPressed() const { return toolPressed_; }
+    Vec3 toolTarget() const;
+    bool toolPressed() const;
 
     bool openFile(const QString& path);
     bool saveFile(const QString& path);
@@ -74,7 +75,6 @@ class MainWindow : public QMainWindow {
   protected:
     void closeEvent(QCloseEvent* event) override;
     void changeEvent(QEvent* event) override;
-    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     void createActions();
@@ -93,10 +93,6 @@ class MainWindow : public QMainWindow {
     template <typename T, typename Reply, typename Request>
     std::shared_ptr<const T> awaitReply(Reply reply, Request request);
     void saveRecording(const QString& path);
-    void fitCamera();
-    void setView(const char* name);
-    void pointTool(const QPoint& pixel, bool pressed);
-    void hideTool();
     void exportImage();
     void exportMesh();
     void showHelp();
@@ -105,6 +101,7 @@ class MainWindow : public QMainWindow {
 
     std::unique_ptr<SimulationThread> sim_;
     Viewport* viewport_ = nullptr;
+    ViewportInput* input_ = nullptr;
     ParameterPanel* panel_ = nullptr;
     SolverPanel* solver_ = nullptr;
     QString lastChart_;
@@ -128,10 +125,6 @@ class MainWindow : public QMainWindow {
     // drawn hands the freed heap back to the system.
     bool releasePending_ = false;
     bool playing_ = true;
-    double toolRadius_ = 0.03;
-    Vec3 toolTarget_ = Vec3::Zero();
-    bool toolPressed_ = false;
-    QPoint lastMouse_;
     QElapsedTimer fpsClock_;
     int framesSinceFps_ = 0;
     double fps_ = 0.0;
