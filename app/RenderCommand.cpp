@@ -4,6 +4,7 @@
 #include "ImageCompare.h"
 #include "OffscreenRenderer.h"
 #include "OutputPattern.h"
+#include "PictureOptions.h"
 #include "PngFile.h"
 #include "ReferenceImage.h"
 #include "SheetSnapshot.h"
@@ -19,46 +20,6 @@
 
 namespace pf::cli {
 
-namespace {
-
-// Camera framing the sheet: the named view (or explicit angles) around the
-// snapshot's bounding sphere.
-OrbitCamera frameCamera(const SheetSnapshot& snap, const QCommandLineParser& parser,
-                        double aspect) {
-    const QString viewName = parser.value(QStringLiteral("view"));
-    std::optional<OrbitCamera> named = namedView(viewName.toStdString());
-    if (!named)
-        throw UsageError{
-            QStringLiteral("--view: unknown view '%1' (known: top, front, iso)").arg(viewName)};
-    OrbitCamera camera = *named;
-    camera.fitPoints(snap.x, aspect);
-    if (parser.isSet(QStringLiteral("camera"))) {
-        const QStringList parts = parser.value(QStringLiteral("camera")).split(QLatin1Char(','));
-        bool ok[3] = {false, false, false};
-        if (parts.size() == 3) {
-            camera.yaw = parts[0].toDouble(&ok[0]);
-            camera.pitch = parts[1].toDouble(&ok[1]);
-            camera.distance = parts[2].toDouble(&ok[2]);
-        }
-        // Written so that NaN fails every comparison and is refused.
-        const bool inRange = ok[0] && ok[1] && ok[2] && std::abs(camera.yaw) <= 360.0 &&
-                             std::abs(camera.pitch) <= 89.9 && camera.distance >= 0.01 &&
-                             camera.distance <= 20.0;
-        if (!inRange)
-            throw UsageError{QStringLiteral("--camera: expected yaw,pitch,distance in degrees "
-                                            "(|yaw| ≤ 360), degrees (|pitch| ≤ 89.9) and metres "
-                                            "(0.01-20)")};
-    }
-    // A sheet whose points lie too far out renders as empty sky in single precision.
-    if (!camera.target.allFinite() || camera.target.norm() > 1e3 ||
-        !std::isfinite(camera.distance) || camera.distance > 1e3)
-        throw UsageError{QStringLiteral("the sheet lies too far from the origin to render "
-                                        "(more than 1 km)")};
-    return camera;
-}
-
-} // namespace
-
 int runRender(const QStringList& arguments) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
@@ -66,24 +27,11 @@ int runRender(const QStringList& arguments) {
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("render"), QStringLiteral("The subcommand."));
     addWorldOptions(parser);
+    addPictureOptions(parser);
     parser.addOptions({
         {QStringLiteral("steps"),
          QStringLiteral("Steps to simulate before the (first) image (default 0)."),
          QStringLiteral("n")},
-        {QStringLiteral("subdiv"), QStringLiteral("Subdivision level 0-4 (default 3)."),
-         QStringLiteral("level")},
-        {QStringLiteral("size"), QStringLiteral("Image size WxH (default 1280x720)."),
-         QStringLiteral("WxH")},
-        {QStringLiteral("view"), QStringLiteral("Named view: top, front, iso (default iso)."),
-         QStringLiteral("name"), QStringLiteral("iso")},
-        {QStringLiteral("camera"),
-         QStringLiteral(
-             "Explicit camera: yaw,pitch,distance (degrees, degrees, metres) around the sheet."),
-         QStringLiteral("y,p,d")},
-        {QStringLiteral("overlay"),
-         QStringLiteral("Overlays, comma-separated: %1.").arg(overlayNames()),
-         QStringLiteral("list")},
-        {QStringLiteral("no-legend"), QStringLiteral("Leave the overlay legend out.")},
         {QStringLiteral("output"),
          QStringLiteral("PNG to write; with --frames a pattern such as frame_%04d.png."),
          QStringLiteral("file")},
@@ -103,30 +51,9 @@ int runRender(const QStringList& arguments) {
         throw UsageError{QStringLiteral("--output is required")};
     const QString output = parser.value(QStringLiteral("output"));
 
-    int width = 1280, height = 720;
-    if (parser.isSet(QStringLiteral("size"))) {
-        const QStringList wh = parser.value(QStringLiteral("size")).split(QLatin1Char('x'));
-        bool okW = false, okH = false;
-        if (wh.size() == 2) {
-            width = wh[0].toInt(&okW);
-            height = wh[1].toInt(&okH);
-        }
-        if (!okW || !okH || width < 16 || height < 16 || width > OffscreenRenderer::kMaxSize ||
-            height > OffscreenRenderer::kMaxSize)
-            throw UsageError{
-                QStringLiteral("--size: expected WxH with each side 16-%1, e.g. 1920x1080")
-                    .arg(OffscreenRenderer::kMaxSize)};
-    }
-    RenderOptions options;
-    options.subdivision =
-        static_cast<int>(integerOption(parser, QStringLiteral("subdiv"), 0, 4).value_or(3));
-    options.legend = !parser.isSet(QStringLiteral("no-legend"));
-    if (parser.isSet(QStringLiteral("overlay"))) {
-        QString error;
-        const auto bits = overlaysFromNames(parser.value(QStringLiteral("overlay")), &error);
-        if (!bits) throw UsageError{QStringLiteral("--overlay: ") + error};
-        options.overlays = *bits;
-    }
+    const PictureSetup picture = pictureFromOptions(parser);
+    const int width = picture.width, height = picture.height;
+    const RenderOptions& options = picture.options;
     const long long steps =
         integerOption(parser, QStringLiteral("steps"), 0, 1'000'000'000).value_or(0);
     const int frames =

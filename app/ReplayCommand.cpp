@@ -1,6 +1,10 @@
 #include "ReplayCommand.h"
 
 #include "CommandLine.h"
+#include "OffscreenRenderer.h"
+#include "OutputPattern.h"
+#include "PictureOptions.h"
+#include "PngFile.h"
 #include "RecordingFile.h"
 #include "SheetFile.h"
 #include "StatsJson.h"
@@ -24,24 +28,83 @@ int runReplay(const QStringList& arguments) {
         {QStringLiteral("save"), QStringLiteral("Save the final sheet to a .paper file."),
          QStringLiteral("file")},
         {QStringLiteral("stats"), QStringLiteral("Print statistics as one JSON object.")},
+        {QStringLiteral("render"),
+         QStringLiteral("Render the session as an image sequence (OSMesa, no display): a pattern "
+                        "such as frame_%04d.png. The first frame is the start."),
+         QStringLiteral("pattern")},
+        {QStringLiteral("every"), QStringLiteral("Steps between frames (default 4)."),
+         QStringLiteral("k")},
     });
+    addPictureOptions(parser);
     if (!parseCommand(parser, arguments, 2)) return 0;
     if (parser.positionalArguments().size() != 2)
         throw UsageError{QStringLiteral("replay needs one recording file (a .paperrec)")};
     const QString path = parser.positionalArguments()[1];
     if (parser.isSet(QStringLiteral("save")))
         requireWritable(QStringLiteral("save"), parser.value(QStringLiteral("save")), {path});
+    const PictureSetup picture = pictureFromOptions(parser);
+    const int every =
+        static_cast<int>(integerOption(parser, QStringLiteral("every"), 1, 1'000'000).value_or(4));
+    std::optional<OutputPattern> frames;
+    if (parser.isSet(QStringLiteral("render"))) {
+        QString error;
+        frames = OutputPattern::parse(parser.value(QStringLiteral("render")), &error);
+        if (!frames) throw UsageError{QStringLiteral("--render: ") + error};
+        if (!frames->hasField())
+            throw UsageError{QStringLiteral("--render needs a pattern such as frame_%04d.png")};
+    }
 
     RecordingLoad load = loadRecording(path);
     if (!load.log) throw UsageError{load.error};
-    EditSession session(*load.log);
+    const EditLog& log = *load.log;
+    EditSession session(log);
+    QTextStream err(stderr);
+
+    // Frame f shows the sheet after f·every steps; every target is checked before any work.
+    const std::int64_t frameCount = (log.endStep - log.start.stepCount) / every + 1;
+    std::unique_ptr<OffscreenRenderer> renderer;
+    OrbitCamera camera;
+    auto writeFrame = [&](std::int64_t f) {
+        const SheetSnapshot snap = makeSnapshot(session.world());
+        QString error;
+        if (writePng(renderer->render(snap, camera, picture.options), frames->path(int(f)), &error,
+                     {path}))
+            return true;
+        err << "paperfold: " << error << '\n';
+        return false;
+    };
+    if (frames) {
+        if (frameCount > 100000)
+            throw UsageError{QStringLiteral("--render: %1 frames; use a larger --every (at most "
+                                            "100000 frames)")
+                                 .arg(frameCount)};
+        for (std::int64_t f = 0; f < frameCount; ++f)
+            requireWritable(QStringLiteral("render"), frames->path(int(f)), {path});
+        QString error;
+        renderer = OffscreenRenderer::create(picture.width, picture.height, &error);
+        if (!renderer) {
+            err << "paperfold: " << error << '\n';
+            return 2;
+        }
+        // Framed on the start and then held, so the sequence does not jitter.
+        camera = frameCamera(makeSnapshot(session.world()), parser,
+                             double(picture.width) / picture.height);
+        if (!writeFrame(0)) return 2;
+    }
+    bool written = true;
+    std::function<bool(const EditSession&)> afterStep;
+    if (frames)
+        afterStep = [&](const EditSession& s) {
+            const std::int64_t done = s.world().stepCount - log.start.stepCount;
+            if (done % every == 0) written = writeFrame(done / every);
+            return written;
+        };
     QElapsedTimer timer;
     timer.start();
-    const std::string failure = replay(*load.log, session);
+    const std::string failure = replay(log, session, afterStep);
+    if (!written) return 2;
     const double wall = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
-    const long long steps = session.world().stepCount - load.log->start.stepCount;
-
-    QTextStream err(stderr);
+    const long long steps = session.world().stepCount - log.start.stepCount;
     if (parser.isSet(QStringLiteral("save"))) {
         QString error;
         if (!saveWorld(session.world(), parser.value(QStringLiteral("save")), &error, {path})) {
@@ -50,7 +113,7 @@ int runReplay(const QStringList& arguments) {
         }
     }
     QJsonObject stats = statsJson(session.world(), wall, steps);
-    stats[QStringLiteral("commands")] = static_cast<qint64>(load.log->commands.size());
+    stats[QStringLiteral("commands")] = static_cast<qint64>(log.commands.size());
     stats[QStringLiteral("complete")] = failure.empty();
     if (parser.isSet(QStringLiteral("stats")))
         QTextStream(stdout) << QJsonDocument(stats).toJson(QJsonDocument::Compact) << '\n';
@@ -58,7 +121,7 @@ int runReplay(const QStringList& arguments) {
         QTextStream(stdout) << QStringLiteral(
                                    "%1: %2 commands over %3 steps, %4 breaks, state %5\n")
                                    .arg(path)
-                                   .arg(load.log->commands.size())
+                                   .arg(log.commands.size())
                                    .arg(steps)
                                    .arg(stats[QStringLiteral("breaks")].toInt())
                                    .arg(stats[QStringLiteral("state_hash")].toString());

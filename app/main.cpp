@@ -28,7 +28,7 @@ void printUsage(QTextStream& out) {
            "  simulate   run a scene or a saved sheet headless; report statistics, save\n"
            "  export     write the subdivided surface as .obj, .ply or .glb\n"
            "  render     render PNG stills or image sequences with no display (OSMesa)\n"
-           "  replay     do a session recorded in the editor again, bit for bit\n"
+           "  replay     do a session recorded in the editor again, bit for bit; render it\n"
            "  stability  map where each integrator fails (CSV and heat maps)\n"
            "  fidelity   check the sheet against physics (stretch, free fall, cantilever...)\n"
            "  bench      speed against accuracy of every integrator configuration (CSV, chart)\n"
@@ -58,7 +58,8 @@ int main(int argc, char* argv[]) {
     // Rendering draws legends with fonts, which need a GUI application; the
     // offscreen platform gives one with no display at all.
     const std::string_view command = argc >= 2 ? argv[1] : "";
-    const bool gui = command == "render" || command == "stability" || command == "bench";
+    const bool gui =
+        command == "render" || command == "replay" || command == "stability" || command == "bench";
     if (gui && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     if (gui && qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {

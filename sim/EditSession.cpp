@@ -19,6 +19,7 @@ EditSession::EditSession(const EditLog& log) : sim_(log.start) {
     toolTarget_ = log.toolTarget;
     pressed_ = log.pressed;
     strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
+    if (pressed_) pressedLook_ = look(); // as replaceWorld did when the recording began
     beginLog();
 }
 
@@ -60,14 +61,21 @@ void EditSession::apply(const EditCommand& c) {
     }
 }
 
-std::string replay(const EditLog& log, EditSession& session) {
+std::string replay(const EditLog& log, EditSession& session,
+                   const std::function<bool(const EditSession&)>& afterStep) {
     auto stepTo = [&](std::int64_t step) -> std::string {
         const std::int64_t now = session.world().stepCount;
         if (step < now)
             return "a command at step " + std::to_string(step) + " comes after step " +
                    std::to_string(now);
-        if (step > now && session.advance(static_cast<int>(step - now)) != StepStatus::Ok)
-            return "the step after " + std::to_string(session.world().stepCount) + " failed";
+        while (session.world().stepCount < step) {
+            const std::int64_t left = step - session.world().stepCount;
+            const int n = afterStep ? 1 : static_cast<int>(std::min<std::int64_t>(left, 1 << 20));
+            if (session.advance(n) != StepStatus::Ok)
+                return "the step after " + std::to_string(session.world().stepCount) + " failed";
+            if (afterStep && !afterStep(session))
+                return "stopped after step " + std::to_string(session.world().stepCount);
+        }
         return {};
     };
     for (const EditCommand& c : log.commands) {
@@ -85,6 +93,8 @@ void EditSession::replaceWorld(const World& world) {
     sim_.world().sphere.active = tool.active;
     strokes_.clear();
     strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
+    // A stroke held across New goes on from the new sheet.
+    pressedLook_ = pressed_ ? look() : SheetLook{};
     beginLog();
 }
 

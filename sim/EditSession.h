@@ -2,6 +2,7 @@
 
 #include "Simulation.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -126,6 +127,9 @@ class EditSession {
 // Does `log` again from its start: steps to each command's step, applies it, and steps
 // to the end. The result is bit for bit the session that was recorded. Returns an empty
 // string, or why the replay stopped (a command before the current step, a failed step).
-std::string replay(const EditLog& log, EditSession& session);
+// `afterStep`, if given, runs after every step (to render frames, say); when it returns
+// false the replay stops there.
+std::string replay(const EditLog& log, EditSession& session,
+                   const std::function<bool(const EditSession&)>& afterStep = {});
 
 } // namespace pf

@@ -125,7 +125,7 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
     log.pressed = pressed.toBool();
     const QCborValue end = root.value(QLatin1String("endStep"));
     if (!end.isInteger() || end.toInteger() < log.start.stepCount ||
-        end.toInteger() > log.start.stepCount + (qint64(1) << 40))
+        end.toInteger() > log.start.stepCount + kMaxRecordedSteps)
         return bad(QStringLiteral("recording.endStep: not a step at or after the start's"));
     log.endStep = end.toInteger();
 

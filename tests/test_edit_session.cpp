@@ -264,6 +264,33 @@ class TestEditSession : public QObject {
         QCOMPARE(encodeRecording(again.log()), encodeRecording(log));
     }
 
+    void aRecordingThatBeginsMidStrokeReplays() {
+        // New while the button is held: the recording starts with the stroke under way,
+        // and its undo must replay the same.
+        EditSession live(*makeScene("press"));
+        const auto path = makeScene("press")->script.sphereKeys;
+        const double radius = live.world().sphere.radius;
+        live.setTool(spherePathAt(path, 0.0), radius, true, true);
+        QCOMPARE(live.advance(8), StepStatus::Ok);
+        live.replaceWorld(*makeScene("press"));
+        for (double t = 0.0; t < 0.5; t += 1.0 / 60.0) {
+            live.setTool(spherePathAt(path, t), radius, true, true);
+            QCOMPARE(live.advance(4), StepStatus::Ok);
+        }
+        const auto end = live.setTool(spherePathAt(path, 0.5), radius, true, false);
+        QVERIFY(end.has_value());
+        QCOMPARE(live.advance(20), StepStatus::Ok);
+        live.undoStroke(end->stroke);
+        QCOMPARE(live.advance(10), StepStatus::Ok);
+
+        const EditLog log = live.log();
+        QVERIFY(log.pressed);
+        EditSession again(log);
+        QCOMPARE(QString::fromStdString(replay(log, again)), QString());
+        QCOMPARE(hex(stateHash(again.world().sheet)), hex(stateHash(live.world().sheet)));
+        QVERIFY(again.world().sheet.verts.x == live.world().sheet.verts.x);
+    }
+
     void theScriptedSessionReachesItsPinnedHash() {
         // As Box2D's test_determinism.c: a fixed scene and command script must reach this
         // hash. A deliberate change of the model or the editing layer updates it in the

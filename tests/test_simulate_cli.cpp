@@ -362,6 +362,26 @@ class TestSimulateCli : public QObject {
         QCOMPARE(o[QStringLiteral("steps")].toInt(), int(session.world().stepCount));
         QVERIFY(QFileInfo::exists(sheet));
 
+        // The same session as an image sequence: the start, then every 10 steps.
+        const QString pattern = dir.filePath(QStringLiteral("f_%03d.png"));
+        const Result frames = runPaperfold(
+            {"replay", rec, "--render", pattern, "--every", "10", "--size", "96x64", "--stats"},
+            true);
+        QCOMPARE(frames.exitCode, 0);
+        QCOMPARE(
+            QJsonDocument::fromJson(frames.out).object()[QStringLiteral("state_hash")].toString(),
+            expected);
+        const int count = int(session.world().stepCount) / 10 + 1;
+        QCOMPARE(QDir(dir.path()).entryList({QStringLiteral("f_*.png")}).size(), count);
+        const QImage first(dir.filePath(QStringLiteral("f_000.png")));
+        const QImage last(
+            dir.filePath(QStringLiteral("f_%1.png").arg(count - 1, 3, 10, QLatin1Char('0'))));
+        QCOMPARE(first.size(), QSize(96, 64));
+        QVERIFY(!last.isNull());
+        QVERIFY(first != last); // the stroke and the settling changed the picture
+        QCOMPARE(runPaperfold({"replay", rec, "--render", dir.filePath("no_field.png")}).exitCode,
+                 1);
+
         // A broken recording: one line, exit 1, nothing written.
         QFile f(rec);
         QVERIFY(f.open(QIODevice::ReadWrite));
