@@ -14,13 +14,13 @@
 // than 35 %.
 #include "MainWindow.h"
 #include "QueuedSignalSpy.h"
+#include "RandomStroke.h"
 #include "SimulationThread.h"
 #include "Viewport.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QFile>
-#include <QMouseEvent>
 #include <QRandomGenerator>
 #include <QSignalSpy>
 #include <QtTest>
@@ -56,12 +56,6 @@ int envInt(const char* name, int fallback) {
     return v && *v ? std::atoi(v) : fallback;
 }
 
-void sendMouse(QWidget* view, QEvent::Type type, const QPoint& p, Qt::MouseButton button,
-               Qt::MouseButtons buttons) {
-    QMouseEvent e(type, p, view->mapToGlobal(p), button, buttons, Qt::NoModifier);
-    QApplication::sendEvent(view, &e);
-}
-
 // Lets the GUI paint for `ms` and waits for a snapshot published after everything
 // queued so far, so the status and the viewport show the current sheet.
 SimulationStatus settle(MainWindow& w, int ms) {
@@ -85,23 +79,10 @@ SimulationStatus settle(MainWindow& w, int ms) {
 // Push strokes across the sheet while the simulation plays, for `seconds` of wall time.
 void crumple(MainWindow& w, double seconds, QRandomGenerator& rng) {
     Viewport* view = w.viewport();
-    const QPoint centre = view->rect().center();
     QElapsedTimer t;
     t.start();
-    while (t.elapsed() < seconds * 1000) {
-        QPoint p = centre + QPoint(rng.bounded(-150, 151), rng.bounded(-100, 101));
-        const QPoint step(rng.bounded(-6, 7), rng.bounded(-6, 7));
-        sendMouse(view, QEvent::MouseMove, p, Qt::NoButton, Qt::NoButton);
-        QTest::qWait(30);
-        sendMouse(view, QEvent::MouseButtonPress, p, Qt::LeftButton, Qt::LeftButton);
-        for (int k = 0; k < 40 && t.elapsed() < seconds * 1000; ++k) {
-            p += step;
-            sendMouse(view, QEvent::MouseMove, p, Qt::NoButton, Qt::LeftButton);
-            QTest::qWait(20);
-        }
-        sendMouse(view, QEvent::MouseButtonRelease, p, Qt::LeftButton, Qt::NoButton);
-        QTest::qWait(20);
-    }
+    while (t.elapsed() < seconds * 1000)
+        bench::randomStroke(view, rng, 40, [&] { return t.elapsed() >= seconds * 1000; });
 }
 
 } // namespace
