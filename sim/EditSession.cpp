@@ -18,8 +18,7 @@ EditSession::EditSession(const EditLog& log) : sim_(log.start) {
     sim_.world().script.sphereKeys.clear();
     toolTarget_ = log.toolTarget;
     pressed_ = log.pressed;
-    strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
-    if (pressed_) pressedLook_ = look(); // as replaceWorld did when the recording began
+    if (pressed_) beginStroke(); // as replaceWorld did when the recording began
     beginLog();
 }
 
@@ -58,6 +57,9 @@ void EditSession::apply(const EditCommand& c) {
     case EditCommand::Kind::Params:
         if (c.params) setParams(*c.params);
         break;
+    case EditCommand::Kind::Diverged:
+        advance(1);
+        break;
     }
 }
 
@@ -80,6 +82,13 @@ std::string replay(const EditLog& log, EditSession& session,
     };
     for (const EditCommand& c : log.commands) {
         if (std::string error = stepTo(c.step); !error.empty()) return error;
+        if (c.kind == EditCommand::Kind::Diverged) {
+            // The editor's step failed here and it paused; the same attempt must fail.
+            if (session.advance(1) == StepStatus::Ok)
+                return "the step after " + std::to_string(c.step) +
+                       " failed in the session but not in the replay";
+            continue;
+        }
         session.apply(c);
     }
     return stepTo(log.endStep);
@@ -92,9 +101,8 @@ void EditSession::replaceWorld(const World& world) {
     sim_.world().sphere.radius = tool.radius;
     sim_.world().sphere.active = tool.active;
     strokes_.clear();
-    strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
     // A stroke held across New goes on from the new sheet.
-    pressedLook_ = pressed_ ? look() : SheetLook{};
+    if (pressed_) beginStroke();
     beginLog();
 }
 
@@ -116,10 +124,7 @@ std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, d
     sphere.radius = radius;
     if (visible && !sphere.active) sphere.center = target; // appears where the cursor is
     sphere.active = visible;
-    if (pressed && !pressed_) {
-        strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
-        pressedLook_ = look();
-    }
+    if (pressed && !pressed_) beginStroke();
     const bool released = pressed_ && !pressed;
     pressed_ = pressed;
     return released ? endStroke() : std::nullopt;
@@ -140,15 +145,28 @@ bool EditSession::restore(const SheetLook& look) {
     return true;
 }
 
+EditSession::MeshSize EditSession::meshSize() const {
+    const Sheet& s = sim_.world().sheet;
+    return {s.verts.size(), s.springs.size(), s.triangleCount()};
+}
+
+void EditSession::beginStroke() {
+    strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
+    pressedLook_ = look();
+    pressedMesh_ = meshSize();
+}
+
 std::optional<EditSession::StrokeEnd> EditSession::endStroke() {
     const Sheet& s = sim_.world().sheet;
     Stroke stroke;
     stroke.firstEvent = strokeStart_;
+    stroke.pressedOn = pressedMesh_;
     for (Index e = strokeStart_; e < static_cast<Index>(s.events.size()); ++e) {
         const DamageEvent& ev = s.events[e];
         if (!ev.active) continue;
-        StrokeEvent se{e, ev.kind, ev.edge, 0.0};
+        StrokeEvent se{e, ev.kind, ev.edge, 0.0, 0.0};
         if (ev.kind == EventKind::Hinge) se.hingeRest = s.springs.rest[ev.springs[0]];
+        if (ev.kind == EventKind::Break) se.creaseRest = s.springs.rest[ev.edge];
         stroke.events.push_back(se);
     }
     bool moved = stroke.events.size() > 0 || pressedLook_.x.size() != s.verts.x.size();
@@ -182,6 +200,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
         all = all && ok;
     }
     if (all) restore(st.before);
+    if (pressed_) beginStroke(); // a stroke under way goes on from what undo left
     return recovered;
 }
 
@@ -191,6 +210,10 @@ std::optional<int> EditSession::redoStroke(int stroke) {
     World& w = sim_.world();
     Sheet& s = w.sheet;
     Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
+    // Edge ids are the stroke's only on the mesh it began on: anything else (damage made
+    // since the undo, another stroke still applied) would break other edges.
+    if (!(meshSize() == st.pressedOn) || s.events.size() + st.events.size() > kMaxDamageEvents)
+        return 0;
     st.firstEvent = static_cast<Index>(s.events.size());
     int reapplied = 0;
     std::vector<Vec3> normals;
@@ -201,6 +224,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
             if (!canBreak(s, se.edge)) continue;
             computeVertexNormals(s, normals);
             se.event = breakEdge(s, se.edge, normals, w.params.psi, w.stepCount);
+            s.springs.rest[se.edge] = se.creaseRest; // the crease as the stroke left it
         } else {
             if (!canHinge(s, se.edge)) continue;
             se.event = insertHinge(s, se.edge, se.hingeRest, w.stepCount);
@@ -208,6 +232,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         ++reapplied;
     }
     if (reapplied == static_cast<int>(st.events.size())) restore(st.after);
+    if (pressed_) beginStroke();
     return reapplied;
 }
 
@@ -221,7 +246,10 @@ StepStatus EditSession::advance(int steps) {
         sphere.center += move;
         sphere.velocity = move / w.params.dt;
         const StepStatus status = sim_.step();
-        if (status != StepStatus::Ok) return status;
+        if (status != StepStatus::Ok) {
+            record({EditCommand::Kind::Diverged, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr});
+            return status;
+        }
     }
     return StepStatus::Ok;
 }

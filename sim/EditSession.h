@@ -12,7 +12,16 @@ namespace pf {
 
 // One mutating call on an EditSession, stamped with the step it was applied before.
 struct EditCommand {
-    enum class Kind : std::uint8_t { Tool = 1, PlaceTool = 2, Undo = 3, Redo = 4, Params = 5 };
+    // Diverged: a step failed here (the editor pauses; the state was rolled back, but the
+    // tool had moved and the integrator restarts), so a replay makes the same attempt.
+    enum class Kind : std::uint8_t {
+        Tool = 1,
+        PlaceTool = 2,
+        Undo = 3,
+        Redo = 4,
+        Params = 5,
+        Diverged = 6
+    };
     Kind kind = Kind::Tool;
     std::int64_t step = 0;
     Vec3 target = Vec3::Zero();              // Tool
@@ -67,6 +76,9 @@ class EditSession {
     // Strokes further back than this are undone by recovery alone, without their sheet
     // states (two copies of every vertex's position and velocity per stroke).
     static constexpr std::size_t kStrokesWithLook = 100;
+    // Each redo logs its breaks again: past this many damage events (the sheet file's
+    // limit) a redo is refused, so that undo/redo cannot grow the log without bound.
+    static constexpr std::size_t kMaxDamageEvents = 8'000'000;
 
     // Undo recovers (§4.2), newest first, every break and hinge since the stroke began —
     // its own and those the sheet made settling after it — and, when all came back, gives
@@ -97,14 +109,21 @@ class EditSession {
         EventKind kind = EventKind::Break;
         Index edge = kNone;
         double hingeRest = 0.0;
+        double creaseRest = 0.0; // a break's crease: the length it broke at
     };
     // What the user saw: the sheet's motion state (its topology is the events' job).
     struct SheetLook {
         std::vector<Vec3> x, v;
         PaperState paper;
     };
+    struct MeshSize {
+        Index vertices = 0, springs = 0, triangles = 0;
+        bool operator==(const MeshSize&) const = default;
+    };
+    MeshSize meshSize() const;
     struct Stroke {
         Index firstEvent = 0; // the damage log's length when it began (or was redone)
+        MeshSize pressedOn;   // redo only onto the mesh the stroke began on
         std::vector<StrokeEvent> events;
         SheetLook before, after;
     };
@@ -121,7 +140,9 @@ class EditSession {
     Index strokeStart_ = 0;
     std::vector<Stroke> strokes_;
     SheetLook pressedLook_; // the sheet when the current stroke began
-    EditLog log_;           // endStep is filled in by log()
+    MeshSize pressedMesh_;
+    void beginStroke();
+    EditLog log_; // endStep is filled in by log()
 };
 
 // Does `log` again from its start: steps to each command's step, applies it, and steps

@@ -1,6 +1,7 @@
 #include "InputFile.h"
 
 #include <QFile>
+#include <algorithm>
 #include <cerrno>
 #include <sys/stat.h>
 #include <system_error>
@@ -35,7 +36,9 @@ std::optional<QByteArray> readInputFile(const QString& path, qint64 maxBytes, QS
         *error = QStringLiteral("%1 is larger than %2 MiB").arg(path).arg(maxBytes >> 20);
         return std::nullopt;
     }
-    return file.read(maxBytes + 1);
+    // Asked for exactly what is there (plus one byte to see a file that grew): QIODevice
+    // reserves the size it is asked for.
+    return file.read(std::min<qint64>(st.st_size, maxBytes) + 1);
 }
 
 } // namespace pf

@@ -124,8 +124,9 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
     if (!pressed.isBool()) return bad(QStringLiteral("recording.pressed: not true or false"));
     log.pressed = pressed.toBool();
     const QCborValue end = root.value(QLatin1String("endStep"));
+    // Written as a difference: a start step near the largest integer must not overflow.
     if (!end.isInteger() || end.toInteger() < log.start.stepCount ||
-        end.toInteger() > log.start.stepCount + kMaxRecordedSteps)
+        end.toInteger() - log.start.stepCount > kMaxRecordedSteps)
         return bad(QStringLiteral("recording.endStep: not a step at or after the start's"));
     log.endStep = end.toInteger();
 
@@ -157,7 +158,7 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
         lastStep = c.step;
         const auto kind = take<std::uint8_t>(p + 8);
         const auto flags = take<std::uint8_t>(p + 9);
-        if (kind < 1 || kind > 5) return bad(where + QStringLiteral(": unknown command"));
+        if (kind < 1 || kind > 6) return bad(where + QStringLiteral(": unknown command"));
         if (flags > 3 || take<std::uint16_t>(p + 10) != 0)
             return bad(where + QStringLiteral(": unknown flags"));
         c.kind = static_cast<EditCommand::Kind>(kind);
@@ -184,6 +185,20 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
 
 bool saveRecording(const EditLog& log, const QString& path, QString* error,
                    const QStringList& inputs) {
+    // What could not be loaded again is not written.
+    qint64 params = 0;
+    for (const EditCommand& c : log.commands) params += c.kind == EditCommand::Kind::Params;
+    if (params > kMaxRecordedParams ||
+        static_cast<qint64>(log.commands.size()) > kMaxRecordedCommands ||
+        log.endStep - log.start.stepCount > kMaxRecordedSteps) {
+        *error = QStringLiteral("the session is too long to record (%1 commands, %2 parameter "
+                                "changes; at most %3 and %4): start a new one with New or Open")
+                     .arg(log.commands.size())
+                     .arg(params)
+                     .arg(kMaxRecordedCommands)
+                     .arg(kMaxRecordedParams);
+        return false;
+    }
     return writeOutputFile(path, encodeRecording(log), error, inputs);
 }
 

@@ -35,7 +35,7 @@ class Simulation {
 
     // The sheet's state was set from outside (an undo giving back what the user saw): the
     // integrator starts afresh from it, as after loading a file.
-    void restartIntegrator() { setIntegrator(integratorName_); }
+    void restartIntegrator() { setIntegrator(world_.params.integrator); }
 
     World& world() { return world_; }
     const World& world() const { return world_; }

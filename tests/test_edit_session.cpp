@@ -1,6 +1,8 @@
 // The editing layer in sim/: the tool's speed limit, strokes and their undo and redo
 // through §4.2 recovery, driven headless exactly as the editor's simulation thread does.
+#include "Breaking.h"
 #include "EditSession.h"
+#include "Normals.h"
 #include "RecordingFile.h"
 #include "SceneScript.h"
 #include "Scenes.h"
@@ -65,8 +67,8 @@ QString hex(std::uint64_t h) {
     return QStringLiteral("%1").arg(h, 16, 16, QLatin1Char('0'));
 }
 
-// The encoded recording with one byte of its first command changed.
-QByteArray withCommandByte(const EditLog& log, qsizetype offset, char value) {
+// The encoded recording with bytes of its first command changed.
+QByteArray withCommandBytes(const EditLog& log, qsizetype offset, const QByteArray& value) {
     QByteArray bytes = encodeRecording(log);
     // The "commands" key, then the byte string's CBOR head: major type 2 with the length
     // inline or in the next 1, 2 or 4 bytes.
@@ -76,8 +78,12 @@ QByteArray withCommandByte(const EditLog& log, qsizetype offset, char value) {
     const int lengthBytes[] = {0, 1, 2, 4};
     const int info = bytes[at] & 0x1f;
     at += 1 + (info < 24 ? 0 : lengthBytes[info - 23]);
-    bytes[at + offset] = value;
+    bytes.replace(at + offset, value.size(), value);
     return bytes;
+}
+
+QByteArray withCommandByte(const EditLog& log, qsizetype offset, char value) {
+    return withCommandBytes(log, offset, QByteArray(1, value));
 }
 
 } // namespace
@@ -190,6 +196,26 @@ class TestEditSession : public QObject {
         QCOMPARE(session.redoStroke(end->stroke), std::optional<int>(end->events));
         QCOMPARE(topology(session.world().sheet), topology(after));
         QVERIFY(session.world().sheet.verts.x == after.verts.x);
+        // Creases keep the length they broke at, so the fold holds when steps resume.
+        QVERIFY(session.world().sheet.springs.rest == after.springs.rest);
+    }
+
+    void redoIsRefusedOnAMeshThatChangedSinceTheUndo() {
+        EditSession session(*makeScene("press"));
+        const auto end = pushStroke(session, 0.0, 0.6);
+        QVERIFY(end.has_value() && end->events > 0);
+        QVERIFY(session.undoStroke(end->stroke).has_value());
+        // Damage the stroke did not make: the first edge that can break, broken by hand.
+        Sheet& s = session.simulation().world().sheet;
+        Index edge = 0;
+        while (!canBreak(s, edge)) ++edge;
+        std::vector<Vec3> normals;
+        computeVertexNormals(s, normals);
+        breakEdge(s, edge, normals, 0.25, session.world().stepCount);
+        const Topology changed = topology(s);
+        QCOMPARE(session.redoStroke(end->stroke), std::optional<int>(0));
+        QCOMPARE(topology(session.world().sheet), changed);
+        QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
     }
 
     void undoAndRedoOfStrokesInAnyOrderKeepAValidMesh() {
@@ -260,6 +286,8 @@ class TestEditSession : public QObject {
         QCOMPARE(hex(stateHash(again.world().sheet)), hex(stateHash(live.world().sheet)));
         QCOMPARE(again.world().sphere.center, live.world().sphere.center);
         QCOMPARE(again.world().params.phi, 0.4);
+        // Everything, not only positions: damage log, rest lengths, clock, generator, paper.
+        QVERIFY(encodeWorld(again.world()) == encodeWorld(live.world()));
         // The replay records itself: recording it again gives the same file.
         QCOMPARE(encodeRecording(again.log()), encodeRecording(log));
     }
@@ -288,7 +316,35 @@ class TestEditSession : public QObject {
         EditSession again(log);
         QCOMPARE(QString::fromStdString(replay(log, again)), QString());
         QCOMPARE(hex(stateHash(again.world().sheet)), hex(stateHash(live.world().sheet)));
-        QVERIFY(again.world().sheet.verts.x == live.world().sheet.verts.x);
+        QVERIFY(encodeWorld(again.world()) == encodeWorld(live.world()));
+    }
+
+    void aSessionThatDivergedReplays() {
+        // The explicit integrator at the editor's frame step blows up; the editor pauses,
+        // the user picks the paper's integrator and plays on. The failed attempt (the tool
+        // moved, the integrator restarted) is part of the session.
+        World w = *makeScene("press");
+        w.params.integrator = "symplectic";
+        w.params.dt = 1.0 / 60.0;
+        w.sheet.verts.x[100].y() += 0.002; // a flat sheet at rest has nothing to amplify
+        EditSession live(w);
+        int k = 0;
+        while (live.advance(1) == StepStatus::Ok && k < 600) ++k;
+        QVERIFY2(k < 600, "symplectic Euler at h = 1/60 must diverge");
+        SimParams p = live.world().params;
+        p.integrator = "jacobi";
+        p.dt = 1.0 / 240.0;
+        live.setParams(p);
+        QCOMPARE(live.advance(30), StepStatus::Ok);
+        const EditLog log = live.log();
+        QVERIFY(std::any_of(log.commands.begin(), log.commands.end(), [](const EditCommand& c) {
+            return c.kind == EditCommand::Kind::Diverged;
+        }));
+        const RecordingLoad load = decodeRecording(encodeRecording(log));
+        QVERIFY2(load.log.has_value(), qPrintable(load.error));
+        EditSession again(*load.log);
+        QCOMPARE(QString::fromStdString(replay(*load.log, again)), QString());
+        QVERIFY(encodeWorld(again.world()) == encodeWorld(live.world()));
     }
 
     void theScriptedSessionReachesItsPinnedHash() {
@@ -322,8 +378,11 @@ class TestEditSession : public QObject {
         QTest::newRow("unknown command") << withCommandByte(log, 8, 9) << "unknown command";
         QTest::newRow("unknown flags") << withCommandByte(log, 9, 4) << "unknown flags";
         QTest::newRow("a step from the future") << withCommandByte(log, 6, 1) << "out of order";
-        QTest::newRow("a NaN target")
-            << withCommandByte(log, 16 + 7, char(0x7f)) << "outside the scene";
+        QByteArray nan(8, '\0');
+        qToLittleEndian(std::numeric_limits<double>::quiet_NaN(), nan.data());
+        QTest::newRow("a NaN target") << withCommandBytes(log, 16, nan) << "outside the scene";
+        QTest::newRow("a target 10^300 m away")
+            << withCommandByte(log, 16 + 7, char(0x7e)) << "outside the scene";
         EditLog backwards = log;
         std::swap(backwards.commands.front().step, backwards.commands.back().step);
         QTest::newRow("steps going back") << encodeRecording(backwards) << "out of order";
