@@ -218,6 +218,7 @@ class TestEditor : public QObject {
         QCOMPARE(replayed.world().params.phi, editor->params.phi);
         QCOMPARE(stateHash(replayed.world().sheet), stateHash(editor->sheet));
         QCOMPARE(replayed.world().sphere.center, editor->sphere.center);
+        QVERIFY(encodeWorld(replayed.world()) == encodeWorld(*editor)); // everything else too
     }
 
     void saveThenOpenRestoresTheSheetExactly() {
