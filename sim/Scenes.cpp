@@ -11,12 +11,17 @@ namespace {
 
 constexpr int kDefaultResolution = 19; // 494 vertices, as in the paper's Fig. 13
 
+SheetSpec sceneSpec(const SceneOptions& options) {
+    return sizedSpec(options.resolution > 0 ? options.resolution : kDefaultResolution,
+                     options.width, options.length);
+}
+
 World baseWorld(std::string_view name, const SceneOptions& options, double height) {
     World w;
     w.scene = std::string(name);
     w.seed = options.seed;
     w.rng.reseed(options.seed);
-    SheetSpec spec = a4Spec(options.resolution > 0 ? options.resolution : kDefaultResolution);
+    SheetSpec spec = sceneSpec(options);
     spec.height = height;
     w.sheet = buildRectangleSheet(spec);
     return w;
@@ -47,7 +52,7 @@ World pressScene(const SceneOptions& options) {
 World drapeScene(const SceneOptions& options) {
     World w = baseWorld("drape", options, 0.35);
     w.params.breaking = false;
-    const SheetSpec spec = a4Spec(options.resolution > 0 ? options.resolution : kDefaultResolution);
+    const SheetSpec spec = sceneSpec(options);
     PinGroup corners;
     corners.vertices = {vertexAt(spec, 0, 0), vertexAt(spec, spec.columns - 1, 0)};
     for (Index i : corners.vertices) w.sheet.verts.pinned[i] = 1;
@@ -57,7 +62,7 @@ World drapeScene(const SceneOptions& options) {
 
 World compressScene(const SceneOptions& options) {
     World w = baseWorld("compress", options, 0.0);
-    const SheetSpec spec = a4Spec(options.resolution > 0 ? options.resolution : kDefaultResolution);
+    const SheetSpec spec = sceneSpec(options);
     // A faint arch seeds the buckling direction so the sheet rises off the ground.
     for (int r = 0; r < spec.rows; ++r)
         for (int c = 0; c < spec.columns; ++c)
@@ -113,6 +118,8 @@ std::optional<World> makeScene(std::string_view name, const SceneOptions& option
     if (options.resolution != 0 &&
         (options.resolution < kMinResolution || options.resolution > kMaxResolution))
         return std::nullopt;
+    for (const double side : {options.width, options.length})
+        if (!(side >= kMinSheetSide && side <= kMaxSheetSide)) return std::nullopt;
     if (name == "press") return pressScene(options);
     if (name == "drape") return drapeScene(options);
     if (name == "compress") return compressScene(options);

@@ -10,16 +10,23 @@
 namespace pf {
 
 struct SceneOptions {
-    int resolution = 0; // vertices along the sheet's short side; 0: the scene's own
+    int resolution = 0; // vertices along the sheet's width; 0: the scene's own
     std::uint64_t seed = 1;
+    double width = 0.210;  // metres, along x (A4 by default)
+    double length = 0.297; // metres, along z
 };
+
+// Sheet sizes a scene accepts, metres.
+inline constexpr double kMinSheetSide = 0.02;
+inline constexpr double kMaxSheetSide = 2.0;
 
 // The named scenes, defined once for the app, the tests and the benchmarks:
 //   press    a sheet on the ground, pressed and dragged by a moving sphere (Fig. 13)
 //   drape    pinned at two corners, falls under gravity; breaking off
 //   compress two opposite edges pushed toward each other: the sheet buckles and creases
 //   drop     a sheet tilted 45° falls onto the ground
-// Returns nullopt for an unknown name.
+// Pins and arches follow the sheet's size. Returns nullopt for an unknown name, a
+// resolution outside [kMinResolution, kMaxResolution] or a side outside the limits.
 std::optional<World> makeScene(std::string_view name, const SceneOptions& options = {});
 const std::vector<std::string>& sceneNames();
 

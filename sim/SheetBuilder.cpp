@@ -7,7 +7,14 @@
 namespace pf {
 
 SheetSpec a4Spec(int resolution) {
+    const SheetSpec a4;
+    return sizedSpec(resolution, a4.width, a4.length);
+}
+
+SheetSpec sizedSpec(int resolution, double width, double length) {
     SheetSpec spec;
+    spec.width = width;
+    spec.length = length;
     spec.columns = resolution;
     spec.rows = static_cast<int>(std::lround((resolution - 1) * spec.length / spec.width)) + 1;
     return spec;

@@ -17,6 +17,8 @@ struct SheetSpec {
 // A4 at `resolution` vertices along the short side, the long side keeping the ratio.
 // resolution 19 gives 19 × 26 = 494 vertices, the paper's Fig. 13 count.
 SheetSpec a4Spec(int resolution);
+// Any rectangle at `resolution` vertices along its width (x), rows keeping the ratio.
+SheetSpec sizedSpec(int resolution, double width, double length);
 
 // Grid triangulated with alternating diagonals (no preferred direction), masses
 // lumped from rest areas, structural springs on every triangle edge, bending

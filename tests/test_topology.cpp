@@ -3,6 +3,7 @@
 #include "Hinges.h"
 #include "Normals.h"
 #include "Rng.h"
+#include "Scenes.h"
 #include "SheetStats.h"
 #include "SheetValidation.h"
 #include "TestSheets.h"
@@ -217,6 +218,37 @@ class TestTopology : public QObject {
             QVERIFY(s.springs.b[e] < original.verts.size());
         }
         QCOMPARE(s.verts.size(), original.verts.size());
+    }
+
+    void everySceneTakesACustomSheetSize() {
+        // 15 × 20 cm at 11 vertices across: the sheet, its pins and its arch follow the
+        // size (the editor's Advanced size used to be ignored for pinned scenes).
+        SceneOptions o;
+        o.resolution = 11;
+        o.width = 0.15;
+        o.length = 0.20;
+        for (const std::string& name : sceneNames()) {
+            const World w = *makeScene(name, o);
+            const Sheet& s = w.sheet;
+            QCOMPARE(QString::fromStdString(validateSheet(s)), QString());
+            QCOMPARE(s.verts.size(), Index(11 * 14)); // rows: round(10 · 20 / 15) + 1
+            double minX = 1, maxX = -1, minZ = 1, maxZ = -1;
+            for (const Vec2& X : s.verts.X) {
+                minX = std::min(minX, X.x());
+                maxX = std::max(maxX, X.x());
+                minZ = std::min(minZ, X.y());
+                maxZ = std::max(maxZ, X.y());
+            }
+            QVERIFY(std::abs(maxX - minX - 0.15) < 1e-12 && std::abs(maxZ - minZ - 0.20) < 1e-12);
+            for (const PinGroup& g : w.script.pins)
+                for (Index i : g.vertices) {
+                    // Pins sit on the sheet's corners (drape) or short edges (compress).
+                    const Vec2& X = s.verts.X[i];
+                    QVERIFY2(std::abs(std::abs(X.y()) - 0.10) < 1e-12, name.c_str());
+                }
+        }
+        o.width = 0.001;
+        QVERIFY(!makeScene("press", o).has_value());
     }
 };
 

@@ -6,7 +6,6 @@
 #include "PngFile.h"
 #include "RecordingFile.h"
 #include "Scenes.h"
-#include "SheetBuilder.h"
 #include "SheetFile.h"
 #include "SimulationThread.h"
 #include "SolverPanel.h"
@@ -64,8 +63,9 @@ const Overlay kOverlayBits[] = {OverlaySpringKinds, OverlayBreakProbability, Ove
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("MainWindow"));
     keepLargeAllocationsReturnable(); // so that New gives a crumpled sheet's memory back
-    sim_ = std::make_unique<SimulationThread>(sceneWorld(scene_));
-    params_ = sceneWorld(scene_).params;
+    const World first = sceneWorld(scene_);
+    params_ = first.params;
+    sim_ = std::make_unique<SimulationThread>(first);
 
     viewport_ = new Viewport(this);
     viewport_->setMouseTracking(true);
@@ -167,7 +167,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 MainWindow::~MainWindow() {
     // Children (the undo stack, the panel, the viewport) are deleted by ~QObject, after
     // this object's own part and the simulation thread are gone; stop them calling back.
-    viewport_->removeEventFilter(this);
+    // The input filter talks to the simulation thread, which goes before the widgets do.
+    viewport_->removeEventFilter(input_);
     undo_->disconnect(this);
     panel_->disconnect(this);
     solver_->disconnect(this);
@@ -175,21 +176,12 @@ MainWindow::~MainWindow() {
 
 World MainWindow::sceneWorld(const QString& scene) const {
     SceneOptions options;
-    options.resolution = panel_ ? panel_->resolution() : 0;
-    World w = makeScene(scene.toStdString(), options).value_or(*makeScene("press"));
-    if (panel_ && (std::abs(panel_->sheetWidth() - 0.210) > 1e-9 ||
-                   std::abs(panel_->sheetLength() - 0.297) > 1e-9)) {
-        // A custom size: rebuild the sheet with the scene's layout, scaled.
-        SheetSpec spec = a4Spec(panel_->resolution());
-        spec.width = panel_->sheetWidth();
-        spec.length = panel_->sheetLength();
-        spec.rows =
-            static_cast<int>(std::lround((spec.columns - 1) * spec.length / spec.width)) + 1;
-        if (w.script.pins.empty()) {
-            spec.height = w.sheet.verts.x.front().y();
-            w.sheet = buildRectangleSheet(spec);
-        }
+    if (panel_) {
+        options.resolution = panel_->resolution();
+        options.width = panel_->sheetWidth();
+        options.length = panel_->sheetLength();
     }
+    World w = makeScene(scene.toStdString(), options).value_or(*makeScene("press"));
     w.script.sphereKeys.clear();
     // The solver lab's fix: the paper's step would let a hanging sheet fall at 0.4 % of g.
     w.params.gravityOutsideFilter = true;
@@ -523,8 +515,9 @@ void MainWindow::onParamsEdited(const SimParams& params, const QString& what, in
 void MainWindow::newScene(const QString& scene) {
     scene_ = scene;
     World w = sceneWorld(scene);
+    const bool breaking = w.params.breaking; // the scene's own (drape has none)
     w.params = params_;
-    w.params.breaking = sceneWorld(scene).params.breaking;
+    w.params.breaking = breaking;
     sim_->replaceWorld(w);
     undo_->clear();
     file_.clear();
