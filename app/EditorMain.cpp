@@ -1,6 +1,7 @@
 #include "EditorMain.h"
 
 #include "DisplayCheck.h"
+#include "Language.h"
 #include "MainWindow.h"
 #include "Viewport.h"
 
@@ -40,7 +41,7 @@ int runEditor(int argc, char* argv[]) {
     const QString lang = parser.isSet(QStringLiteral("lang"))
                              ? parser.value(QStringLiteral("lang"))
                              : QSettings().value(QStringLiteral("language")).toString();
-    if (!MainWindow::installLanguage(lang))
+    if (!installLanguage(lang))
         QTextStream(stderr) << "paperfold: no translation for '" << lang << "'; using English\n";
 
     MainWindow window;

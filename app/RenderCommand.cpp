@@ -53,7 +53,7 @@ int runRender(const QStringList& arguments) {
 
     const PictureSetup picture = pictureFromOptions(parser);
     const int width = picture.width, height = picture.height;
-    const RenderOptions& options = picture.options;
+    RenderOptions options = picture.options;
     const long long steps =
         integerOption(parser, QStringLiteral("steps"), 0, 1'000'000'000).value_or(0);
     const int frames =
@@ -90,6 +90,7 @@ int runRender(const QStringList& arguments) {
     }
 
     Simulation sim(worldFromOptions(parser));
+    options.sigma = sim.world().params.sigma; // the sheet's own, or --sigma
     QTextStream out(stdout), err(stderr);
     auto advance = [&](long long n) {
         for (long long k = 0; k < n; ++k)
@@ -107,7 +108,7 @@ int runRender(const QStringList& arguments) {
         err << "paperfold: " << error << '\n';
         return 2;
     }
-    const SheetSnapshot first = makeSnapshot(sim.world());
+    const SheetSnapshot first = makeSnapshot(sim);
     // The camera is framed on the first image and then held, so a sequence does not jitter.
     const OrbitCamera camera = frameCamera(first, parser, double(width) / height);
     const bool progress = isatty(fileno(stderr));
@@ -118,7 +119,7 @@ int runRender(const QStringList& arguments) {
             err << "\npaperfold: the simulation diverged before frame " << f << '\n';
             return 3;
         }
-        const SheetSnapshot snap = f == 0 ? first : makeSnapshot(sim.world());
+        const SheetSnapshot snap = f == 0 ? first : makeSnapshot(sim);
         timer.start();
         const QImage image = renderer->render(snap, camera, options);
         renderSeconds += timer.nsecsElapsed() * 1e-9;

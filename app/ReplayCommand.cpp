@@ -65,10 +65,11 @@ int runReplay(const QStringList& arguments) {
     std::unique_ptr<OffscreenRenderer> renderer;
     OrbitCamera camera;
     auto writeFrame = [&](std::int64_t f) {
-        const SheetSnapshot snap = makeSnapshot(session.world());
+        const SheetSnapshot snap = makeSnapshot(session.simulation());
         QString error;
-        if (writePng(renderer->render(snap, camera, picture.options), frames->path(int(f)), &error,
-                     {path}))
+        RenderOptions options = picture.options;
+        options.sigma = session.world().params.sigma;
+        if (writePng(renderer->render(snap, camera, options), frames->path(int(f)), &error, {path}))
             return true;
         err << "paperfold: " << error << '\n';
         return false;
@@ -87,7 +88,7 @@ int runReplay(const QStringList& arguments) {
             return 2;
         }
         // Framed on the start and then held, so the sequence does not jitter.
-        camera = frameCamera(makeSnapshot(session.world()), parser,
+        camera = frameCamera(makeSnapshot(session.simulation()), parser,
                              double(picture.width) / picture.height);
         if (!writeFrame(0)) return 2;
     }

@@ -17,6 +17,9 @@ enum Overlay : unsigned {
 
 struct RenderOptions {
     int subdivision = 3;
+    // σ of §4.3: how sharply the subdivided surface creases (0 keeps it flat between
+    // vertices). A look, not physics: the simulation never sees it.
+    double sigma = 1.0;
     unsigned overlays = 0;
     bool ground = true;
     bool sphere = true;

@@ -202,11 +202,12 @@ void SheetRenderer::setVec3(GLuint prog, const char* name, const float* v) {
 
 void SheetRenderer::uploadSurface(const SheetSnapshot& snap, const RenderOptions& options) {
     const bool strain = options.overlays & OverlayStrain;
-    const SurfaceKey key{snap.serial, options.subdivision, snap.sigma, options.strainRange, strain};
+    const SurfaceKey key{snap.serial, options.subdivision, options.sigma, options.strainRange,
+                         strain};
     if (snap.serial != 0 && key == surfaceKey_) return;
     surfaceKey_ = key;
     const SurfaceMesh mesh = subdivide(snap.x, snap.tris, strain ? &snap.vertexStrain : nullptr,
-                                       snap.sigma, options.subdivision);
+                                       options.sigma, options.subdivision);
     clearFor(vertexData_, mesh.positions.size() * kSurfaceFloats);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         Vec3 p = mesh.positions[i];

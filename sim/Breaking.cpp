@@ -215,6 +215,47 @@ bool canBreak(const Sheet& sheet, Index spring) {
            S.faces[spring][0] != kNone && S.faces[spring][1] != kNone;
 }
 
+namespace {
+
+// A breakable compressed edge between two triangles, not held at both ends: one that the
+// pass draws a number for (whatever Eq. 10 gives, so that the draws stay in step).
+bool breakCandidate(const Sheet& sheet, Index spring) {
+    if (!canBreak(sheet, spring)) return false;
+    const auto& S = sheet.springs;
+    const auto& V = sheet.verts;
+    const Index i = S.a[spring], j = S.b[spring];
+    if (V.pinned[i] && V.pinned[j]) return false;
+    return (V.x[i] - V.x[j]).norm() < S.rest[spring];
+}
+
+double candidateProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
+                            double phi) {
+    const auto& S = sheet.springs;
+    const auto& V = sheet.verts;
+    const Index i = S.a[spring], j = S.b[spring];
+    const Index r = sheet.oppositeVertex(S.faces[spring][0], i, j);
+    const Index lv = sheet.oppositeVertex(S.faces[spring][1], i, j);
+    return breakProbability((V.x[i] - V.x[j]).norm(), S.rest[spring], (V.x[r] - V.x[lv]).norm(),
+                            normals[i].dot(normals[j]), normals[r].dot(normals[lv]), phi);
+}
+
+} // namespace
+
+double springBreakProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
+                              double phi) {
+    return breakCandidate(sheet, spring) ? candidateProbability(sheet, normals, spring, phi) : 0.0;
+}
+
+void computeBreakProbabilities(const Sheet& sheet, const SimParams& params, BreakScratch& scratch) {
+    const Index count = sheet.springs.size();
+    scratch.probability.assign(static_cast<std::size_t>(count), 0.0f);
+    if (!params.breaking) return;
+    computeVertexNormals(sheet, scratch.normals);
+    for (Index s = 0; s < count; ++s)
+        scratch.probability[s] =
+            static_cast<float>(springBreakProbability(sheet, scratch.normals, s, params.phi));
+}
+
 int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t step,
                  BreakScratch& scratch) {
     computeVertexNormals(sheet, scratch.normals);
@@ -223,22 +264,13 @@ int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t s
     int breaks = 0;
     // Springs appended by a break in this pass are not visited until the next step.
     const Index count = sheet.springs.size();
+    scratch.probability.assign(static_cast<std::size_t>(count), 0.0f);
     for (Index s = 0; s < count; ++s) {
-        if (!canBreak(sheet, s)) continue;
-        const auto& S = sheet.springs;
-        const Index t1 = S.faces[s][0], t2 = S.faces[s][1];
-        const auto& V = sheet.verts;
-        const Index i = S.a[s], j = S.b[s];
-        if (V.pinned[i] && V.pinned[j]) continue;
-        const double l = (V.x[i] - V.x[j]).norm();
-        const double l0 = S.rest[s];
-        if (!(l < l0)) continue;
-        if (scratch.touched[t1] || scratch.touched[t2]) continue;
-        const Index r = sheet.oppositeVertex(t1, i, j);
-        const Index lv = sheet.oppositeVertex(t2, i, j);
-        const double P =
-            breakProbability(l, l0, (V.x[r] - V.x[lv]).norm(), normals[i].dot(normals[j]),
-                             normals[r].dot(normals[lv]), params.phi);
+        if (!breakCandidate(sheet, s)) continue;
+        const double P = candidateProbability(sheet, normals, s, params.phi);
+        scratch.probability[s] = static_cast<float>(P);
+        const auto& faces = sheet.springs.faces[s];
+        if (scratch.touched[faces[0]] || scratch.touched[faces[1]]) continue;
         const double p = breakProbabilityPerStep(P, params.dt, params.breakReferenceStep);
         if (!(rng.uniform() < p)) continue;
         const Index ev = breakEdge(sheet, s, normals, params.psi, step);

@@ -40,11 +40,23 @@ bool canRecover(const Sheet& sheet, Index event);
 // Returns false (and changes nothing) when the event cannot be recovered.
 bool recoverEvent(Sheet& sheet, Index event);
 
+// Eq. 10 for `spring` as the sheet stands (`normals`: its vertex normals): zero where
+// the spring cannot break, is not compressed, or joins two pinned vertices.
+double springBreakProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
+                              double phi);
+
 // Per-step scratch for the break pass, kept to avoid allocation in the step.
 struct BreakScratch {
     std::vector<Vec3> normals;
     std::vector<std::uint8_t> touched; // per triangle: changed this step
+    // Per spring that existed when the pass began: Eq. 10 as the pass drew it. The
+    // editor's overlay shows these rather than working Eq. 10 out a second time.
+    std::vector<float> probability;
 };
+
+// Eq. 10 for every spring of the sheet as it stands, into scratch.probability (all zero
+// when breaking is off): for a sheet changed outside a step, such as by an undo.
+void computeBreakProbabilities(const Sheet& sheet, const SimParams& params, BreakScratch& scratch);
 
 // Tests every breakable compressed spring with two faces in index order, drawing one
 // uniform number per candidate from rng, at most one break per triangle per step.

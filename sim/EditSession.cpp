@@ -106,7 +106,9 @@ void EditSession::replaceWorld(const World& world) {
     beginLog();
 }
 
-void EditSession::setParams(const SimParams& params) {
+void EditSession::setParams(const SimParams& given) {
+    SimParams params = given;
+    params.sigma = sim_.world().params.sigma; // a look, which the editor keeps (Params.h)
     EditCommand c;
     c.kind = EditCommand::Kind::Params;
     c.params = std::make_shared<const SimParams>(params);
@@ -114,6 +116,7 @@ void EditSession::setParams(const SimParams& params) {
     if (!(params.material == sim_.world().params.material))
         setMaterial(sim_.world(), params.material);
     sim_.world().params = params;
+    sim_.sheetEdited(); // φ weighs Eq. 10
 }
 
 std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, double radius,
@@ -199,6 +202,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
         recovered += ok ? 1 : 0;
         all = all && ok;
     }
+    sim_.sheetEdited();
     if (all) restore(st.before);
     if (pressed_) beginStroke(); // a stroke under way goes on from what undo left
     return recovered;
@@ -231,6 +235,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         }
         ++reapplied;
     }
+    sim_.sheetEdited();
     if (reapplied == static_cast<int>(st.events.size())) restore(st.after);
     if (pressed_) beginStroke();
     return reapplied;

@@ -57,11 +57,13 @@ class EditSession {
     static constexpr double kMaxToolSpeed = 1.5; // m/s
 
     Simulation& simulation() { return sim_; }
+    const Simulation& simulation() const { return sim_; }
     const World& world() const { return sim_.world(); }
 
     // A new sheet: the tool keeps its size and visibility, the stroke history is cleared.
     void replaceWorld(const World& world);
-    // A different paper weighs differently: the masses follow its areal density.
+    // A different paper weighs differently: the masses follow its areal density. σ is
+    // kept as the world has it: it is a look, which the editor holds and saves itself.
     void setParams(const SimParams& params);
 
     struct StrokeEnd {

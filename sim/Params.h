@@ -11,9 +11,11 @@ namespace pf {
 // Everything that steers a step. Plain data: the editor edits it, files store it.
 struct SimParams {
     // Paper §4.1 and §5 (defaults: the paper's Fig. 13).
-    double phi = 0.1;   // fragility: scales the normal dot products of Eq. 10
-    double psi = 0.25;  // recursive-break tendency: scales the offset of Eq. 11
-    double sigma = 1.0; // crumple sharpness of the §4.3 subdivision (rendering only)
+    double phi = 0.1;  // fragility: scales the normal dot products of Eq. 10
+    double psi = 0.25; // recursive-break tendency: scales the offset of Eq. 11
+    // Crumple sharpness of the §4.3 subdivision: a look, saved with the sheet, that no
+    // step reads. The editor keeps it with the renderer (RenderOptions::sigma).
+    double sigma = 1.0;
 
     double dt = 1.0 / 240.0;
     int iterations = 1; // Jacobi sweeps after the initial estimate (Eq. 6)
@@ -59,6 +61,8 @@ struct SimParams {
     // Contact: fraction of tangential velocity removed per step while touching.
     double groundFriction = 0.6;
     double sphereFriction = 0.6;
+
+    friend bool operator==(const SimParams&, const SimParams&) = default;
 
     double stiffnessOf(SpringKind k) const { return stiffness[static_cast<int>(k)]; }
     double dampingOf(SpringKind k) const { return damping[static_cast<int>(k)]; }

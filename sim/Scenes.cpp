@@ -127,4 +127,13 @@ std::optional<World> makeScene(std::string_view name, const SceneOptions& option
     return std::nullopt;
 }
 
+World makeEditorScene(std::string_view name, const SceneOptions& options, double toolRadius) {
+    World w = makeScene(name, options).value_or(*makeScene("press", options));
+    w.script.sphereKeys.clear();
+    w.params.gravityOutsideFilter = true;
+    w.sphere.radius = toolRadius;
+    w.sphere.active = false;
+    return w;
+}
+
 } // namespace pf

@@ -28,6 +28,11 @@ inline constexpr double kMaxSheetSide = 2.0;
 // Pins and arches follow the sheet's size. Returns nullopt for an unknown name, a
 // resolution outside [kMinResolution, kMaxResolution] or a side outside the limits.
 std::optional<World> makeScene(std::string_view name, const SceneOptions& options = {});
+// The scene as the editor starts it: the user drives the tool (no scripted sphere; it
+// has `toolRadius` and shows once the cursor is over the sheet), and gravity is
+// integrated outside the filter (the solver lab's fix: the paper's step lets a hanging
+// sheet fall at 0.4 % of g). An unknown name gives `press`.
+World makeEditorScene(std::string_view name, const SceneOptions& options, double toolRadius);
 const std::vector<std::string>& sceneNames();
 
 // Makes the world's sheet of `material`: sets it in the parameters and scales the

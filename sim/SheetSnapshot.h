@@ -1,7 +1,7 @@
 #pragma once
 
 #include "Collisions.h"
-#include "World.h"
+#include "Simulation.h"
 
 #include <vector>
 
@@ -15,7 +15,7 @@ struct SheetSnapshot {
     std::vector<std::array<Index, 2>> springEnds;
     std::vector<SpringKind> springKind;
     std::vector<std::uint8_t> breakable;
-    std::vector<float> breakProbability;      // Eq. 10 per spring (0 where it cannot break)
+    std::vector<float> breakProbability;      // Eq. 10 per spring, as the last step drew it
     std::vector<float> strain;                // per spring: l/l0 - 1
     std::vector<std::uint8_t> recentlyBroken; // per spring: part of a break in the last second
     std::vector<float> vertexStrain;          // per vertex: max |strain| of its structural springs
@@ -24,12 +24,12 @@ struct SheetSnapshot {
     double groundHeight = 0.0;
     double time = 0.0;
     std::int64_t step = 0;
-    double sigma = 1.0;
     // Unique per makeSnapshot call: lets a renderer keep work done for this snapshot.
     std::uint64_t serial = 0;
 };
 
-// `recentSeconds`: how far back a break counts as recent.
-SheetSnapshot makeSnapshot(const World& world, double recentSeconds = 1.0);
+// `recentSeconds`: how far back a break counts as recent. The break probabilities are
+// the ones the simulation's last step drew (Simulation::breakProbabilities).
+SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds = 1.0);
 
 } // namespace pf

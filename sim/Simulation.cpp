@@ -99,6 +99,7 @@ StepStatus Simulation::step() {
         sheet.verts.v = savedV_;
         sheet.paper = savedPaper_;
         setIntegrator(integratorName_); // a fresh one: nothing of the failed step stays
+        sheetEdited();
         return StepStatus::Diverged;
     }
 
@@ -107,16 +108,30 @@ StepStatus Simulation::step() {
     if (!integrator_->asleep()) {
         const Index before = sheet.verts.size();
         if (p.breaking) lastBreaks_ = runBreakPass(sheet, p, w.rng, w.stepCount, breakScratch_);
+        // Without breaking the next breakProbabilities gives zeros, at the cost of a fill.
+        probabilitiesCurrent_ = p.breaking;
         // Eq. 11 lifts a new vertex off the edge toward the side it bends to, which
         // can be into the desk or the tool; an integrator that keeps the sheet out of
         // them gets the vertex back on their surface.
         if (integrator_->resolvesContacts()) keepOutOfContacts(w, before);
         if (p.hinges) lastHinges_ = runHingePass(sheet, p, w.stepCount);
+        // Springs the two passes added are drawn for from the next step on.
+        if (probabilitiesCurrent_)
+            breakScratch_.probability.resize(static_cast<std::size_t>(sheet.springs.size()), 0.0f);
     }
 
     ++w.stepCount;
     w.time += p.dt;
     return StepStatus::Ok;
+}
+
+const std::vector<float>& Simulation::breakProbabilities() const {
+    if (!probabilitiesCurrent_ ||
+        breakScratch_.probability.size() != static_cast<std::size_t>(world_.sheet.springs.size())) {
+        computeBreakProbabilities(world_.sheet, world_.params, breakScratch_);
+        probabilitiesCurrent_ = true;
+    }
+    return breakScratch_.probability;
 }
 
 } // namespace pf

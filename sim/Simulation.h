@@ -35,7 +35,16 @@ class Simulation {
 
     // The sheet's state was set from outside (an undo giving back what the user saw): the
     // integrator starts afresh from it, as after loading a file.
-    void restartIntegrator() { setIntegrator(world_.params.integrator); }
+    void restartIntegrator() {
+        setIntegrator(world_.params.integrator);
+        sheetEdited();
+    }
+
+    // Eq. 10 per spring (zero where a spring cannot break), as the last step's break pass
+    // drew it; worked out afresh, once, after the sheet or φ changed outside a step.
+    const std::vector<float>& breakProbabilities() const;
+    // The sheet or its parameters were changed between steps (undo, redo, new φ).
+    void sheetEdited() { probabilitiesCurrent_ = false; }
 
     World& world() { return world_; }
     const World& world() const { return world_; }
@@ -49,11 +58,13 @@ class Simulation {
     World world_;
     std::unique_ptr<Integrator> integrator_;
     std::string integratorName_;
-    BreakScratch breakScratch_;
+    // Mutable: breakProbabilities() fills it in when an edit left it behind the sheet.
+    mutable BreakScratch breakScratch_;
     std::vector<Vec3> savedX_, savedV_;
     PaperState savedPaper_;
     int lastBreaks_ = 0;
     int lastHinges_ = 0;
+    mutable bool probabilitiesCurrent_ = false;
 };
 
 // Positions far beyond this distance from the origin (metres) count as a blow-up.

@@ -28,12 +28,12 @@ SheetSnapshot snapshotFor(const RenderCase& c) {
     SceneOptions options;
     options.resolution = c.resolution;
     World w = *makeScene(c.scene, options);
-    w.params.sigma = c.sigma;
     Simulation sim(std::move(w));
     for (int k = 0; k < c.steps; ++k) sim.step();
     for (Vec3& p : sim.world().sheet.verts.x)
         p.y() += c.bumps * (1.0 + std::sin(31.0 * p.x()) * std::cos(23.0 * p.z()));
-    return makeSnapshot(sim.world());
+    sim.sheetEdited();
+    return makeSnapshot(sim);
 }
 
 OrbitCamera cameraFor(const RenderCase& c, const SheetSnapshot& snap, double aspect) {
@@ -49,6 +49,7 @@ OrbitCamera cameraFor(const RenderCase& c, const SheetSnapshot& snap, double asp
 
 RenderOptions optionsFor(const RenderCase& c) {
     RenderOptions o;
+    o.sigma = c.sigma;
     o.overlays = c.overlays;
     o.subdivision = c.subdivision;
     return o;

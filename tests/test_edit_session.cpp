@@ -7,6 +7,7 @@
 #include "SceneScript.h"
 #include "Scenes.h"
 #include "SheetFile.h"
+#include "SheetSnapshot.h"
 #include "SheetStats.h"
 #include "SheetValidation.h"
 
@@ -255,6 +256,51 @@ class TestEditSession : public QObject {
             QCOMPARE(session.advance(2), StepStatus::Ok);
             QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
         }
+    }
+
+    // The overlay's Eq. 10 is the one the step drew, not worked out again per frame; an
+    // edit between steps (new φ, undo) brings it up to date once.
+    void theSnapshotsBreakProbabilitiesAreTheStepsAndFollowEdits() {
+        EditSession session(*makeScene("press"));
+        pushStroke(session, 0.0, 0.6);
+        auto fresh = [&] {
+            BreakScratch scratch;
+            computeBreakProbabilities(session.world().sheet, session.world().params, scratch);
+            return scratch.probability;
+        };
+        // A step that broke and hinged nothing left the geometry the pass saw.
+        int quiet = 0;
+        while (quiet < 200) {
+            session.advance(1);
+            if (session.simulation().lastBreaks() == 0 && session.simulation().lastHinges() == 0)
+                break;
+            ++quiet;
+        }
+        QVERIFY(quiet < 200);
+        const std::vector<float> drawn = makeSnapshot(session.simulation()).breakProbability;
+        QCOMPARE(drawn, fresh());
+        const auto compressed =
+            std::count_if(drawn.begin(), drawn.end(), [](float p) { return p > 0.0f; });
+        QVERIFY(compressed > 10); // the stroke left compressed edges to look at
+
+        // The step's values are what the snapshot shows: change one and see it there.
+        auto& cached = const_cast<std::vector<float>&>(session.simulation().breakProbabilities());
+        cached[0] = 0.75f;
+        QCOMPARE(makeSnapshot(session.simulation()).breakProbability[0], 0.75f);
+
+        // φ weighs Eq. 10: a new φ while paused shows at once.
+        SimParams p = session.world().params;
+        p.phi = 0.9;
+        session.setParams(p);
+        const std::vector<float> afterPhi = makeSnapshot(session.simulation()).breakProbability;
+        QCOMPARE(afterPhi, fresh());
+        QVERIFY(afterPhi != drawn);
+
+        // Undo changes the mesh: the overlay has one value per spring of the new one.
+        session.undoStroke(0);
+        const SheetSnapshot undone = makeSnapshot(session.simulation());
+        QCOMPARE(undone.breakProbability.size(), undone.springEnds.size());
+        QCOMPARE(undone.breakProbability, fresh());
     }
 
     void aNewSheetForgetsTheStrokesButKeepsTheTool() {

@@ -95,7 +95,7 @@ class TestRender : public QObject {
             return c;
         }();
         auto picture = [&] {
-            return renderer->render(makeSnapshot(session.world()), camera, options);
+            return renderer->render(makeSnapshot(session.simulation()), camera, options);
         };
         const QImage before = picture();
         std::optional<EditSession::StrokeEnd> end;

@@ -47,79 +47,7 @@
     </message>
 </context>
 <context>
-    <name>pf::MainWindow</name>
-    <message>
-        <source>PaperFold sheets (*.paper)</source>
-        <translation>PaperFold-Blätter (*.paper)</translation>
-    </message>
-    <message>
-        <source>Open Sheet</source>
-        <translation>Blatt öffnen</translation>
-    </message>
-    <message>
-        <source>Save Sheet</source>
-        <translation>Blatt speichern</translation>
-    </message>
-    <message>
-        <source>Export Image</source>
-        <translation>Bild exportieren</translation>
-    </message>
-    <message>
-        <source>PNG images (*.png)</source>
-        <translation>PNG-Bilder (*.png)</translation>
-    </message>
-    <message>
-        <source>Export Mesh</source>
-        <translation>Netz exportieren</translation>
-    </message>
-    <message>
-        <source>Meshes (*.obj *.ply *.glb)</source>
-        <translation>Netze (*.obj *.ply *.glb)</translation>
-    </message>
-    <message>
-        <source>PaperFold</source>
-        <translation>PaperFold</translation>
-    </message>
-    <message>
-        <source>The sheet has unsaved changes. Save them?</source>
-        <translation>Das Blatt hat ungespeicherte Änderungen. Speichern?</translation>
-    </message>
-    <message>
-        <source>Size in pixels (width x height):</source>
-        <translation>Größe in Pixeln (Breite x Höhe):</translation>
-    </message>
-    <message>
-        <source>The simulation blew up at step %1 and was paused; the last good state is kept. Try more steps per second or the jacobi integrator.</source>
-        <translation>Die Simulation ist in Schritt %1 instabil geworden und wurde angehalten; der letzte gültige Zustand bleibt erhalten. Versuchen Sie mehr Schritte pro Sekunde oder den Integrator „jacobi“.</translation>
-    </message>
-    <message>
-        <source>Ctrl+E</source>
-        <translation>Ctrl+E</translation>
-    </message>
-    <message>
-        <source>Ctrl+Shift+E</source>
-        <translation>Ctrl+Shift+E</translation>
-    </message>
-    <message>
-        <source>Ctrl+Y</source>
-        <translation>Ctrl+Y</translation>
-    </message>
-    <message>
-        <source>Ctrl+.</source>
-        <translation>Ctrl+.</translation>
-    </message>
-    <message>
-        <source>Ctrl+R</source>
-        <translation>Ctrl+R</translation>
-    </message>
-    <message>
-        <source>About PaperFold</source>
-        <translation>Über PaperFold</translation>
-    </message>
-    <message>
-        <source>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Crumple and fold virtual paper in real time, after Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Virtuelles Papier in Echtzeit zerknittern und falten, nach Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</translation>
-    </message>
+    <name>pf::ActionTexts</name>
     <message>
         <source>&amp;Press (sphere on a sheet)</source>
         <translation>&amp;Drücken (Kugel auf einem Blatt)</translation>
@@ -133,6 +61,10 @@
         <translation>&amp;Stauchen (Kanten zusammengeschoben)</translation>
     </message>
     <message>
+        <source>D&amp;rop (tilted sheet falls)</source>
+        <translation>&amp;Fallen (schräges Blatt fällt)</translation>
+    </message>
+    <message>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
@@ -143,6 +75,14 @@
     <message>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>Save &amp;Recording…</source>
+        <translation>&amp;Aufzeichnung speichern…</translation>
+    </message>
+    <message>
+        <source>Save everything done since New or Open; paperfold replay does it again</source>
+        <translation>Alles seit Neu oder Öffnen Getane speichern; paperfold replay wiederholt es</translation>
     </message>
     <message>
         <source>Export &amp;Image…</source>
@@ -236,6 +176,114 @@
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
+</context>
+<context>
+    <name>pf::ChartBrowser</name>
+    <message>
+        <source>Folder written by &apos;paperfold bench&apos;</source>
+        <translation>Von „paperfold bench“ geschriebener Ordner</translation>
+    </message>
+    <message>
+        <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
+        <translation>Kein bench_*.png in %1. Ausführen: paperfold bench --output-dir %1</translation>
+    </message>
+</context>
+<context>
+    <name>pf::EditorDialogs</name>
+    <message>
+        <source>PaperFold sheets (*.paper)</source>
+        <translation>PaperFold-Blätter (*.paper)</translation>
+    </message>
+    <message>
+        <source>Open Sheet</source>
+        <translation>Blatt öffnen</translation>
+    </message>
+    <message>
+        <source>Save Sheet</source>
+        <translation>Blatt speichern</translation>
+    </message>
+    <message>
+        <source>Export Image</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <source>Export Mesh</source>
+        <translation>Netz exportieren</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.ply *.glb)</source>
+        <translation>Netze (*.obj *.ply *.glb)</translation>
+    </message>
+    <message>
+        <source>Save Recording</source>
+        <translation>Aufzeichnung speichern</translation>
+    </message>
+    <message>
+        <source>PaperFold recordings (*.paperrec)</source>
+        <translation>PaperFold-Aufzeichnungen (*.paperrec)</translation>
+    </message>
+    <message>
+        <source>PaperFold</source>
+        <translation>PaperFold</translation>
+    </message>
+    <message>
+        <source>The sheet has unsaved changes. Save them?</source>
+        <translation>Das Blatt hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <source>Size in pixels (width x height):</source>
+        <translation>Größe in Pixeln (Breite x Höhe):</translation>
+    </message>
+</context>
+<context>
+    <name>pf::HelpText</name>
+    <message>
+        <source>Mouse and Keys</source>
+        <translation>Maus und Tasten</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Move the mouse&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the sphere follows the cursor over the sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;push the sphere into the paper (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Maus bewegen&lt;/b&gt;&lt;/td&gt;&lt;td&gt;die Kugel folgt dem Zeiger über dem Blatt&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Linke Maustaste ziehen&lt;/b&gt;&lt;/td&gt;&lt;td&gt;die Kugel ins Papier drücken (ein Rückgängig-Schritt pro Strich)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Strg + Mausrad&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Kugelradius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Rechte Maustaste ziehen&lt;/b&gt;, Pfeiltasten&lt;/td&gt;&lt;td&gt;Kamera umkreisen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mittlere Maustaste ziehen&lt;/b&gt;, Umschalt + rechte Maustaste&lt;/td&gt;&lt;td&gt;verschieben&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mausrad&lt;/b&gt;, + und −&lt;/td&gt;&lt;td&gt;zoomen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Ansicht von oben, von vorn, isometrisch; auf das Blatt einpassen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Leertaste&lt;/b&gt;, &lt;b&gt;Strg+.&lt;/b&gt;, &lt;b&gt;Strg+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Abspielen/Anhalten, Einzelschritt, Zurücksetzen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Überlagerungen: Federarten, Bruchwahrscheinlichkeit, Dehnung, letzte Brüche, Drahtgitter&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Strg+Z&lt;/b&gt;, &lt;b&gt;Strg+Umschalt+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;rückgängig, wiederholen&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>About PaperFold</source>
+        <translation>Über PaperFold</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Crumple and fold virtual paper in real time, after Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Virtuelles Papier in Echtzeit zerknittern und falten, nach Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>pf::MainWindow</name>
+    <message>
+        <source>The simulation blew up at step %1 and was paused; the last good state is kept. Try more steps per second or the jacobi integrator.</source>
+        <translation>Die Simulation ist in Schritt %1 instabil geworden und wurde angehalten; der letzte gültige Zustand bleibt erhalten. Versuchen Sie mehr Schritte pro Sekunde oder den Integrator „jacobi“.</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <source>Ctrl+.</source>
+        <translation>Ctrl+.</translation>
+    </message>
+    <message>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
     <message>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
@@ -289,18 +337,6 @@
         <translation>&lt;neues Blatt&gt;</translation>
     </message>
     <message>
-        <source>%1 fps</source>
-        <translation>%1 fps</translation>
-    </message>
-    <message>
-        <source>step %1 µs</source>
-        <translation>Schritt %1 µs</translation>
-    </message>
-    <message>
-        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
-        <translation>%1 Knoten · %2 Federn · %3 Brüche · %4 Scharniere</translation>
-    </message>
-    <message>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -315,10 +351,6 @@
     <message>
         <source>Could not save the sheet: %1</source>
         <translation>Das Blatt konnte nicht gespeichert werden: %1</translation>
-    </message>
-    <message>
-        <source>the simulation did not answer</source>
-        <translation>die Simulation hat nicht geantwortet</translation>
     </message>
     <message>
         <source>Saved %1</source>
@@ -337,44 +369,8 @@
         <translation>Das Netz konnte nicht exportiert werden: %1</translation>
     </message>
     <message>
-        <source>Mouse and Keys</source>
-        <translation>Maus und Tasten</translation>
-    </message>
-    <message>
-        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Move the mouse&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the sphere follows the cursor over the sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;push the sphere into the paper (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Maus bewegen&lt;/b&gt;&lt;/td&gt;&lt;td&gt;die Kugel folgt dem Zeiger über dem Blatt&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Linke Maustaste ziehen&lt;/b&gt;&lt;/td&gt;&lt;td&gt;die Kugel ins Papier drücken (ein Rückgängig-Schritt pro Strich)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Strg + Mausrad&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Kugelradius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Rechte Maustaste ziehen&lt;/b&gt;, Pfeiltasten&lt;/td&gt;&lt;td&gt;Kamera umkreisen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mittlere Maustaste ziehen&lt;/b&gt;, Umschalt + rechte Maustaste&lt;/td&gt;&lt;td&gt;verschieben&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mausrad&lt;/b&gt;, + und −&lt;/td&gt;&lt;td&gt;zoomen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Ansicht von oben, von vorn, isometrisch; auf das Blatt einpassen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Leertaste&lt;/b&gt;, &lt;b&gt;Strg+.&lt;/b&gt;, &lt;b&gt;Strg+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Abspielen/Anhalten, Einzelschritt, Zurücksetzen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Überlagerungen: Federarten, Bruchwahrscheinlichkeit, Dehnung, letzte Brüche, Drahtgitter&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Strg+Z&lt;/b&gt;, &lt;b&gt;Strg+Umschalt+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;rückgängig, wiederholen&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
-    </message>
-    <message>
-        <source>D&amp;rop (tilted sheet falls)</source>
-        <translation>&amp;Fallen (schräges Blatt fällt)</translation>
-    </message>
-    <message>
         <source>Solver</source>
         <translation>Löser</translation>
-    </message>
-    <message>
-        <source>Folder written by &apos;paperfold bench&apos;</source>
-        <translation>Von „paperfold bench“ geschriebener Ordner</translation>
-    </message>
-    <message>
-        <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
-        <translation>Kein bench_*.png in %1. Ausführen: paperfold bench --output-dir %1</translation>
-    </message>
-    <message>
-        <source>Save Recording</source>
-        <translation>Aufzeichnung speichern</translation>
-    </message>
-    <message>
-        <source>PaperFold recordings (*.paperrec)</source>
-        <translation>PaperFold-Aufzeichnungen (*.paperrec)</translation>
-    </message>
-    <message>
-        <source>Save &amp;Recording…</source>
-        <translation>&amp;Aufzeichnung speichern…</translation>
-    </message>
-    <message>
-        <source>Save everything done since New or Open; paperfold replay does it again</source>
-        <translation>Alles seit Neu oder Öffnen Getane speichern; paperfold replay wiederholt es</translation>
     </message>
     <message>
         <source>Could not save the recording: %1</source>
@@ -509,6 +505,21 @@
     <message>
         <source>The paper&apos;s weight, stretch and bending stiffness and friction, used by the xpbd integrator: tissue 20 g/m², office 80 g/m², card 250 g/m².</source>
         <translation>Gewicht, Dehn- und Biegesteifigkeit und Reibung des Papiers, vom xpbd-Integrator verwendet: Seidenpapier 20 g/m², Büropapier 80 g/m², Karton 250 g/m².</translation>
+    </message>
+</context>
+<context>
+    <name>pf::StatusReadout</name>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 fps</translation>
+    </message>
+    <message>
+        <source>step %1 µs</source>
+        <translation>Schritt %1 µs</translation>
+    </message>
+    <message>
+        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
+        <translation>%1 Knoten · %2 Federn · %3 Brüche · %4 Scharniere</translation>
     </message>
 </context>
 <context>

@@ -46,79 +46,7 @@
     </message>
 </context>
 <context>
-    <name>pf::MainWindow</name>
-    <message>
-        <source>PaperFold sheets (*.paper)</source>
-        <translation>PaperFold シート (*.paper)</translation>
-    </message>
-    <message>
-        <source>Open Sheet</source>
-        <translation>シートを開く</translation>
-    </message>
-    <message>
-        <source>Save Sheet</source>
-        <translation>シートを保存</translation>
-    </message>
-    <message>
-        <source>Export Image</source>
-        <translation>画像を書き出す</translation>
-    </message>
-    <message>
-        <source>PNG images (*.png)</source>
-        <translation>PNG 画像 (*.png)</translation>
-    </message>
-    <message>
-        <source>Export Mesh</source>
-        <translation>メッシュを書き出す</translation>
-    </message>
-    <message>
-        <source>Meshes (*.obj *.ply *.glb)</source>
-        <translation>メッシュ (*.obj *.ply *.glb)</translation>
-    </message>
-    <message>
-        <source>PaperFold</source>
-        <translation>PaperFold</translation>
-    </message>
-    <message>
-        <source>The sheet has unsaved changes. Save them?</source>
-        <translation>シートに未保存の変更があります。保存しますか？</translation>
-    </message>
-    <message>
-        <source>Size in pixels (width x height):</source>
-        <translation>ピクセル単位のサイズ（幅 x 高さ）：</translation>
-    </message>
-    <message>
-        <source>The simulation blew up at step %1 and was paused; the last good state is kept. Try more steps per second or the jacobi integrator.</source>
-        <translation>ステップ %1 でシミュレーションが発散したため一時停止しました。最後の正常な状態は保持されています。1秒あたりのステップ数を増やすか、jacobi 積分器を試してください。</translation>
-    </message>
-    <message>
-        <source>Ctrl+E</source>
-        <translation>Ctrl+E</translation>
-    </message>
-    <message>
-        <source>Ctrl+Shift+E</source>
-        <translation>Ctrl+Shift+E</translation>
-    </message>
-    <message>
-        <source>Ctrl+Y</source>
-        <translation>Ctrl+Y</translation>
-    </message>
-    <message>
-        <source>Ctrl+.</source>
-        <translation>Ctrl+.</translation>
-    </message>
-    <message>
-        <source>Ctrl+R</source>
-        <translation>Ctrl+R</translation>
-    </message>
-    <message>
-        <source>About PaperFold</source>
-        <translation>PaperFold について</translation>
-    </message>
-    <message>
-        <source>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Crumple and fold virtual paper in real time, after Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;仮想の紙をリアルタイムでくしゃくしゃにし、折ります。Kang &amp;amp; Cho『A Simple and Effective Model for Interactive Paper Folding』に基づきます。&lt;/p&gt;</translation>
-    </message>
+    <name>pf::ActionTexts</name>
     <message>
         <source>&amp;Press (sphere on a sheet)</source>
         <translation>押す（シート上の球）(&amp;P)</translation>
@@ -132,6 +60,10 @@
         <translation>圧縮（両端を押し寄せる）(&amp;C)</translation>
     </message>
     <message>
+        <source>D&amp;rop (tilted sheet falls)</source>
+        <translation>落下（傾いたシートが落ちる）(&amp;R)</translation>
+    </message>
+    <message>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
@@ -142,6 +74,14 @@
     <message>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Save &amp;Recording…</source>
+        <translation>記録を保存(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Save everything done since New or Open; paperfold replay does it again</source>
+        <translation>新規または開く以降の操作をすべて保存します。paperfold replay で再現できます</translation>
     </message>
     <message>
         <source>Export &amp;Image…</source>
@@ -235,6 +175,114 @@
         <source>&amp;Redo</source>
         <translation>やり直し(&amp;R)</translation>
     </message>
+</context>
+<context>
+    <name>pf::ChartBrowser</name>
+    <message>
+        <source>Folder written by &apos;paperfold bench&apos;</source>
+        <translation>「paperfold bench」が書き出したフォルダー</translation>
+    </message>
+    <message>
+        <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
+        <translation>%1 に bench_*.png がありません。次を実行してください：paperfold bench --output-dir %1</translation>
+    </message>
+</context>
+<context>
+    <name>pf::EditorDialogs</name>
+    <message>
+        <source>PaperFold sheets (*.paper)</source>
+        <translation>PaperFold シート (*.paper)</translation>
+    </message>
+    <message>
+        <source>Open Sheet</source>
+        <translation>シートを開く</translation>
+    </message>
+    <message>
+        <source>Save Sheet</source>
+        <translation>シートを保存</translation>
+    </message>
+    <message>
+        <source>Export Image</source>
+        <translation>画像を書き出す</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 画像 (*.png)</translation>
+    </message>
+    <message>
+        <source>Export Mesh</source>
+        <translation>メッシュを書き出す</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.ply *.glb)</source>
+        <translation>メッシュ (*.obj *.ply *.glb)</translation>
+    </message>
+    <message>
+        <source>Save Recording</source>
+        <translation>記録を保存</translation>
+    </message>
+    <message>
+        <source>PaperFold recordings (*.paperrec)</source>
+        <translation>PaperFold 記録 (*.paperrec)</translation>
+    </message>
+    <message>
+        <source>PaperFold</source>
+        <translation>PaperFold</translation>
+    </message>
+    <message>
+        <source>The sheet has unsaved changes. Save them?</source>
+        <translation>シートに未保存の変更があります。保存しますか？</translation>
+    </message>
+    <message>
+        <source>Size in pixels (width x height):</source>
+        <translation>ピクセル単位のサイズ（幅 x 高さ）：</translation>
+    </message>
+</context>
+<context>
+    <name>pf::HelpText</name>
+    <message>
+        <source>Mouse and Keys</source>
+        <translation>マウスとキー</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Move the mouse&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the sphere follows the cursor over the sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;push the sphere into the paper (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;マウスを動かす&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球がカーソルに合わせて紙の上を動きます&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;左ドラッグ&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球を紙に押し込みます（1ストロークで1回の取り消し単位）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + ホイール&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球の半径&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;右ドラッグ&lt;/b&gt;、矢印キー&lt;/td&gt;&lt;td&gt;カメラを回転&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;中ドラッグ&lt;/b&gt;、Shift + 右ドラッグ&lt;/td&gt;&lt;td&gt;パン&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;ホイール&lt;/b&gt;、+ と −&lt;/td&gt;&lt;td&gt;ズーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;、&lt;b&gt;2&lt;/b&gt;、&lt;b&gt;3&lt;/b&gt;、&lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;上面・正面・等角ビュー、シートに合わせる&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;、&lt;b&gt;Ctrl+.&lt;/b&gt;、&lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;再生/一時停止、1ステップ、リセット&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;オーバーレイ：ばねの種類、破断確率、ひずみ、最近の破断、ワイヤーフレーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;、&lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;元に戻す、やり直し&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>About PaperFold</source>
+        <translation>PaperFold について</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Crumple and fold virtual paper in real time, after Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;仮想の紙をリアルタイムでくしゃくしゃにし、折ります。Kang &amp;amp; Cho『A Simple and Effective Model for Interactive Paper Folding』に基づきます。&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>pf::MainWindow</name>
+    <message>
+        <source>The simulation blew up at step %1 and was paused; the last good state is kept. Try more steps per second or the jacobi integrator.</source>
+        <translation>ステップ %1 でシミュレーションが発散したため一時停止しました。最後の正常な状態は保持されています。1秒あたりのステップ数を増やすか、jacobi 積分器を試してください。</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <source>Ctrl+.</source>
+        <translation>Ctrl+.</translation>
+    </message>
+    <message>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
     <message>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
@@ -288,18 +336,6 @@
         <translation>&lt;新しいシート&gt;</translation>
     </message>
     <message>
-        <source>%1 fps</source>
-        <translation>%1 fps</translation>
-    </message>
-    <message>
-        <source>step %1 µs</source>
-        <translation>ステップ %1 µs</translation>
-    </message>
-    <message>
-        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
-        <translation>頂点 %1 · ばね %2 · 破断 %3 · ヒンジ %4</translation>
-    </message>
-    <message>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
@@ -314,10 +350,6 @@
     <message>
         <source>Could not save the sheet: %1</source>
         <translation>シートを保存できませんでした：%1</translation>
-    </message>
-    <message>
-        <source>the simulation did not answer</source>
-        <translation>シミュレーションが応答しませんでした</translation>
     </message>
     <message>
         <source>Saved %1</source>
@@ -336,44 +368,8 @@
         <translation>メッシュを書き出せませんでした：%1</translation>
     </message>
     <message>
-        <source>Mouse and Keys</source>
-        <translation>マウスとキー</translation>
-    </message>
-    <message>
-        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Move the mouse&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the sphere follows the cursor over the sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;push the sphere into the paper (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;マウスを動かす&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球がカーソルに合わせて紙の上を動きます&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;左ドラッグ&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球を紙に押し込みます（1ストロークで1回の取り消し単位）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + ホイール&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球の半径&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;右ドラッグ&lt;/b&gt;、矢印キー&lt;/td&gt;&lt;td&gt;カメラを回転&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;中ドラッグ&lt;/b&gt;、Shift + 右ドラッグ&lt;/td&gt;&lt;td&gt;パン&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;ホイール&lt;/b&gt;、+ と −&lt;/td&gt;&lt;td&gt;ズーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;、&lt;b&gt;2&lt;/b&gt;、&lt;b&gt;3&lt;/b&gt;、&lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;上面・正面・等角ビュー、シートに合わせる&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;、&lt;b&gt;Ctrl+.&lt;/b&gt;、&lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;再生/一時停止、1ステップ、リセット&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;オーバーレイ：ばねの種類、破断確率、ひずみ、最近の破断、ワイヤーフレーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;、&lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;元に戻す、やり直し&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
-    </message>
-    <message>
-        <source>D&amp;rop (tilted sheet falls)</source>
-        <translation>落下（傾いたシートが落ちる）(&amp;R)</translation>
-    </message>
-    <message>
         <source>Solver</source>
         <translation>ソルバー</translation>
-    </message>
-    <message>
-        <source>Folder written by &apos;paperfold bench&apos;</source>
-        <translation>「paperfold bench」が書き出したフォルダー</translation>
-    </message>
-    <message>
-        <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
-        <translation>%1 に bench_*.png がありません。次を実行してください：paperfold bench --output-dir %1</translation>
-    </message>
-    <message>
-        <source>Save Recording</source>
-        <translation>記録を保存</translation>
-    </message>
-    <message>
-        <source>PaperFold recordings (*.paperrec)</source>
-        <translation>PaperFold 記録 (*.paperrec)</translation>
-    </message>
-    <message>
-        <source>Save &amp;Recording…</source>
-        <translation>記録を保存(&amp;R)…</translation>
-    </message>
-    <message>
-        <source>Save everything done since New or Open; paperfold replay does it again</source>
-        <translation>新規または開く以降の操作をすべて保存します。paperfold replay で再現できます</translation>
     </message>
     <message>
         <source>Could not save the recording: %1</source>
@@ -508,6 +504,21 @@
     <message>
         <source>The paper&apos;s weight, stretch and bending stiffness and friction, used by the xpbd integrator: tissue 20 g/m², office 80 g/m², card 250 g/m².</source>
         <translation>xpbd 積分器が使う紙の重さ、伸び剛性、曲げ剛性、摩擦: ティッシュ 20 g/m²、コピー用紙 80 g/m²、厚紙 250 g/m²。</translation>
+    </message>
+</context>
+<context>
+    <name>pf::StatusReadout</name>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 fps</translation>
+    </message>
+    <message>
+        <source>step %1 µs</source>
+        <translation>ステップ %1 µs</translation>
+    </message>
+    <message>
+        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
+        <translation>頂点 %1 · ばね %2 · 破断 %3 · ヒンジ %4</translation>
     </message>
 </context>
 <context>

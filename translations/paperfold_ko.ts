@@ -46,79 +46,7 @@
     </message>
 </context>
 <context>
-    <name>pf::MainWindow</name>
-    <message>
-        <source>PaperFold sheets (*.paper)</source>
-        <translation>PaperFold 시트 (*.paper)</translation>
-    </message>
-    <message>
-        <source>Open Sheet</source>
-        <translation>시트 열기</translation>
-    </message>
-    <message>
-        <source>Save Sheet</source>
-        <translation>시트 저장</translation>
-    </message>
-    <message>
-        <source>Export Image</source>
-        <translation>이미지 내보내기</translation>
-    </message>
-    <message>
-        <source>PNG images (*.png)</source>
-        <translation>PNG 이미지 (*.png)</translation>
-    </message>
-    <message>
-        <source>Export Mesh</source>
-        <translation>메시 내보내기</translation>
-    </message>
-    <message>
-        <source>Meshes (*.obj *.ply *.glb)</source>
-        <translation>메시 (*.obj *.ply *.glb)</translation>
-    </message>
-    <message>
-        <source>PaperFold</source>
-        <translation>PaperFold</translation>
-    </message>
-    <message>
-        <source>The sheet has unsaved changes. Save them?</source>
-        <translation>시트에 저장하지 않은 변경 사항이 있습니다. 저장할까요?</translation>
-    </message>
-    <message>
-        <source>Size in pixels (width x height):</source>
-        <translation>픽셀 크기 (너비 x 높이):</translation>
-    </message>
-    <message>
-        <source>The simulation blew up at step %1 and was paused; the last good state is kept. Try more steps per second or the jacobi integrator.</source>
-        <translation>%1 단계에서 시뮬레이션이 발산하여 일시 정지했습니다. 마지막 정상 상태는 유지됩니다. 초당 단계 수를 늘리거나 jacobi 적분기를 사용해 보세요.</translation>
-    </message>
-    <message>
-        <source>Ctrl+E</source>
-        <translation>Ctrl+E</translation>
-    </message>
-    <message>
-        <source>Ctrl+Shift+E</source>
-        <translation>Ctrl+Shift+E</translation>
-    </message>
-    <message>
-        <source>Ctrl+Y</source>
-        <translation>Ctrl+Y</translation>
-    </message>
-    <message>
-        <source>Ctrl+.</source>
-        <translation>Ctrl+.</translation>
-    </message>
-    <message>
-        <source>Ctrl+R</source>
-        <translation>Ctrl+R</translation>
-    </message>
-    <message>
-        <source>About PaperFold</source>
-        <translation>PaperFold 정보</translation>
-    </message>
-    <message>
-        <source>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Crumple and fold virtual paper in real time, after Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;가상의 종이를 실시간으로 구기고 접습니다. Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;에 기반합니다.&lt;/p&gt;</translation>
-    </message>
+    <name>pf::ActionTexts</name>
     <message>
         <source>&amp;Press (sphere on a sheet)</source>
         <translation>누르기 (시트 위의 구)(&amp;P)</translation>
@@ -132,6 +60,10 @@
         <translation>압축 (양 끝을 밀기)(&amp;C)</translation>
     </message>
     <message>
+        <source>D&amp;rop (tilted sheet falls)</source>
+        <translation>떨어뜨리기 (기울어진 시트가 떨어짐)(&amp;R)</translation>
+    </message>
+    <message>
         <source>&amp;Open…</source>
         <translation>열기(&amp;O)…</translation>
     </message>
@@ -142,6 +74,14 @@
     <message>
         <source>Save &amp;As…</source>
         <translation>다른 이름으로 저장(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Save &amp;Recording…</source>
+        <translation>기록 저장(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Save everything done since New or Open; paperfold replay does it again</source>
+        <translation>새로 만들기 또는 열기 이후의 모든 작업을 저장합니다. paperfold replay로 다시 실행할 수 있습니다</translation>
     </message>
     <message>
         <source>Export &amp;Image…</source>
@@ -235,6 +175,114 @@
         <source>&amp;Redo</source>
         <translation>다시 실행(&amp;R)</translation>
     </message>
+</context>
+<context>
+    <name>pf::ChartBrowser</name>
+    <message>
+        <source>Folder written by &apos;paperfold bench&apos;</source>
+        <translation>&apos;paperfold bench&apos;가 쓴 폴더</translation>
+    </message>
+    <message>
+        <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
+        <translation>%1에 bench_*.png가 없습니다. 실행: paperfold bench --output-dir %1</translation>
+    </message>
+</context>
+<context>
+    <name>pf::EditorDialogs</name>
+    <message>
+        <source>PaperFold sheets (*.paper)</source>
+        <translation>PaperFold 시트 (*.paper)</translation>
+    </message>
+    <message>
+        <source>Open Sheet</source>
+        <translation>시트 열기</translation>
+    </message>
+    <message>
+        <source>Save Sheet</source>
+        <translation>시트 저장</translation>
+    </message>
+    <message>
+        <source>Export Image</source>
+        <translation>이미지 내보내기</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 이미지 (*.png)</translation>
+    </message>
+    <message>
+        <source>Export Mesh</source>
+        <translation>메시 내보내기</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.ply *.glb)</source>
+        <translation>메시 (*.obj *.ply *.glb)</translation>
+    </message>
+    <message>
+        <source>Save Recording</source>
+        <translation>기록 저장</translation>
+    </message>
+    <message>
+        <source>PaperFold recordings (*.paperrec)</source>
+        <translation>PaperFold 기록 (*.paperrec)</translation>
+    </message>
+    <message>
+        <source>PaperFold</source>
+        <translation>PaperFold</translation>
+    </message>
+    <message>
+        <source>The sheet has unsaved changes. Save them?</source>
+        <translation>시트에 저장하지 않은 변경 사항이 있습니다. 저장할까요?</translation>
+    </message>
+    <message>
+        <source>Size in pixels (width x height):</source>
+        <translation>픽셀 크기 (너비 x 높이):</translation>
+    </message>
+</context>
+<context>
+    <name>pf::HelpText</name>
+    <message>
+        <source>Mouse and Keys</source>
+        <translation>마우스와 키</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Move the mouse&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the sphere follows the cursor over the sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;push the sphere into the paper (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;마우스 이동&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구가 커서를 따라 종이 위를 움직입니다&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;왼쪽 드래그&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구를 종이에 눌러 넣습니다 (한 번의 스트로크가 한 번의 실행 취소 단위)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + 휠&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구 반지름&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;오른쪽 드래그&lt;/b&gt;, 화살표 키&lt;/td&gt;&lt;td&gt;카메라 회전&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;가운데 드래그&lt;/b&gt;, Shift + 오른쪽 드래그&lt;/td&gt;&lt;td&gt;이동&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;휠&lt;/b&gt;, + 와 −&lt;/td&gt;&lt;td&gt;확대/축소&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;위, 앞, 등각 보기; 종이에 맞추기&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;재생/일시 정지, 한 단계, 초기화&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;오버레이: 스프링 종류, 파단 확률, 변형률, 최근 파단, 와이어프레임&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;실행 취소, 다시 실행&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>About PaperFold</source>
+        <translation>PaperFold 정보</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Crumple and fold virtual paper in real time, after Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;가상의 종이를 실시간으로 구기고 접습니다. Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;에 기반합니다.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>pf::MainWindow</name>
+    <message>
+        <source>The simulation blew up at step %1 and was paused; the last good state is kept. Try more steps per second or the jacobi integrator.</source>
+        <translation>%1 단계에서 시뮬레이션이 발산하여 일시 정지했습니다. 마지막 정상 상태는 유지됩니다. 초당 단계 수를 늘리거나 jacobi 적분기를 사용해 보세요.</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <source>Ctrl+.</source>
+        <translation>Ctrl+.</translation>
+    </message>
+    <message>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
     <message>
         <source>&amp;File</source>
         <translation>파일(&amp;F)</translation>
@@ -288,18 +336,6 @@
         <translation>&lt;새 시트&gt;</translation>
     </message>
     <message>
-        <source>%1 fps</source>
-        <translation>%1 fps</translation>
-    </message>
-    <message>
-        <source>step %1 µs</source>
-        <translation>단계 %1 µs</translation>
-    </message>
-    <message>
-        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
-        <translation>정점 %1 · 스프링 %2 · 파단 %3 · 힌지 %4</translation>
-    </message>
-    <message>
         <source>Untitled</source>
         <translation>제목 없음</translation>
     </message>
@@ -314,10 +350,6 @@
     <message>
         <source>Could not save the sheet: %1</source>
         <translation>시트를 저장할 수 없습니다: %1</translation>
-    </message>
-    <message>
-        <source>the simulation did not answer</source>
-        <translation>시뮬레이션이 응답하지 않았습니다</translation>
     </message>
     <message>
         <source>Saved %1</source>
@@ -336,44 +368,8 @@
         <translation>메시를 내보낼 수 없습니다: %1</translation>
     </message>
     <message>
-        <source>Mouse and Keys</source>
-        <translation>마우스와 키</translation>
-    </message>
-    <message>
-        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Move the mouse&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the sphere follows the cursor over the sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;push the sphere into the paper (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;마우스 이동&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구가 커서를 따라 종이 위를 움직입니다&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;왼쪽 드래그&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구를 종이에 눌러 넣습니다 (한 번의 스트로크가 한 번의 실행 취소 단위)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + 휠&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구 반지름&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;오른쪽 드래그&lt;/b&gt;, 화살표 키&lt;/td&gt;&lt;td&gt;카메라 회전&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;가운데 드래그&lt;/b&gt;, Shift + 오른쪽 드래그&lt;/td&gt;&lt;td&gt;이동&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;휠&lt;/b&gt;, + 와 −&lt;/td&gt;&lt;td&gt;확대/축소&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;위, 앞, 등각 보기; 종이에 맞추기&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;재생/일시 정지, 한 단계, 초기화&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;오버레이: 스프링 종류, 파단 확률, 변형률, 최근 파단, 와이어프레임&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;실행 취소, 다시 실행&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
-    </message>
-    <message>
-        <source>D&amp;rop (tilted sheet falls)</source>
-        <translation>떨어뜨리기 (기울어진 시트가 떨어짐)(&amp;R)</translation>
-    </message>
-    <message>
         <source>Solver</source>
         <translation>솔버</translation>
-    </message>
-    <message>
-        <source>Folder written by &apos;paperfold bench&apos;</source>
-        <translation>&apos;paperfold bench&apos;가 쓴 폴더</translation>
-    </message>
-    <message>
-        <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
-        <translation>%1에 bench_*.png가 없습니다. 실행: paperfold bench --output-dir %1</translation>
-    </message>
-    <message>
-        <source>Save Recording</source>
-        <translation>기록 저장</translation>
-    </message>
-    <message>
-        <source>PaperFold recordings (*.paperrec)</source>
-        <translation>PaperFold 기록 (*.paperrec)</translation>
-    </message>
-    <message>
-        <source>Save &amp;Recording…</source>
-        <translation>기록 저장(&amp;R)…</translation>
-    </message>
-    <message>
-        <source>Save everything done since New or Open; paperfold replay does it again</source>
-        <translation>새로 만들기 또는 열기 이후의 모든 작업을 저장합니다. paperfold replay로 다시 실행할 수 있습니다</translation>
     </message>
     <message>
         <source>Could not save the recording: %1</source>
@@ -508,6 +504,21 @@
     <message>
         <source>The paper&apos;s weight, stretch and bending stiffness and friction, used by the xpbd integrator: tissue 20 g/m², office 80 g/m², card 250 g/m².</source>
         <translation>xpbd 적분기가 쓰는 종이의 무게, 늘임 강성, 굽힘 강성, 마찰: 티슈 20 g/m², 사무용지 80 g/m², 판지 250 g/m².</translation>
+    </message>
+</context>
+<context>
+    <name>pf::StatusReadout</name>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 fps</translation>
+    </message>
+    <message>
+        <source>step %1 µs</source>
+        <translation>단계 %1 µs</translation>
+    </message>
+    <message>
+        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
+        <translation>정점 %1 · 스프링 %2 · 파단 %3 · 힌지 %4</translation>
     </message>
 </context>
 <context>

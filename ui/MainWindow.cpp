@@ -1,16 +1,21 @@
 #include "MainWindow.h"
 
+#include "ActionTexts.h"
 #include "AllocatorTuning.h"
-#include "OffscreenRenderer.h"
+#include "ChartBrowser.h"
+#include "EditorDialogs.h"
+#include "EditorParameters.h"
+#include "HelpText.h"
+#include "Language.h"
 #include "ParameterPanel.h"
-#include "PngFile.h"
+#include "RecentFiles.h"
 #include "RecordingFile.h"
 #include "Scenes.h"
 #include "SheetFile.h"
 #include "SimulationThread.h"
+#include "SnapshotExport.h"
 #include "SolverPanel.h"
-#include "Subdivision.h"
-#include "SurfaceExport.h"
+#include "StatusReadout.h"
 #include "UndoCommands.h"
 #include "Viewport.h"
 #include "ViewportInput.h"
@@ -19,29 +24,15 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QDialog>
-#include <QDir>
 #include <QDockWidget>
-#include <QEventLoop>
-#include <QFileDialog>
 #include <QFileInfo>
-#include <QInputDialog>
-#include <QLabel>
-#include <QLibraryInfo>
-#include <QLocale>
 #include <QMenuBar>
-#include <QMouseEvent>
-#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
-#include <QTimer>
 #include <QToolBar>
-#include <QTranslator>
 #include <QUndoStack>
 #include <QUndoView>
-#include <QVBoxLayout>
-#include <QWheelEvent>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -50,8 +41,6 @@
 namespace pf {
 
 namespace {
-
-constexpr int kMaxRecent = 8;
 
 const char* const kOverlayActions[] = {"overlay.springs", "overlay.probability", "overlay.strain",
                                        "overlay.breaks", "overlay.wireframe"};
@@ -64,7 +53,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("MainWindow"));
     keepLargeAllocationsReturnable(); // so that New gives a crumpled sheet's memory back
     const World first = sceneWorld(scene_);
-    params_ = first.params;
     sim_ = std::make_unique<SimulationThread>(first);
 
     viewport_ = new Viewport(this);
@@ -73,55 +61,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     input_ = new ViewportInput(viewport_, sim_.get(), this);
     setCentralWidget(viewport_);
     undo_ = new QUndoStack(this);
+    parameters_ = new EditorParameters(undo_, this);
+    charts_ = new ChartBrowser(this);
 
-    chooseFile = [this](FileDialog kind) {
-        const QString sheets = tr("PaperFold sheets (*.paper)");
-        switch (kind) {
-        case FileDialog::Open:
-            return QFileDialog::getOpenFileName(this, tr("Open Sheet"), QString(), sheets);
-        case FileDialog::Save:
-            return QFileDialog::getSaveFileName(this, tr("Save Sheet"), file_, sheets);
-        case FileDialog::ExportImage:
-            return QFileDialog::getSaveFileName(this, tr("Export Image"), QString(),
-                                                tr("PNG images (*.png)"));
-        case FileDialog::ExportMesh:
-            return QFileDialog::getSaveFileName(this, tr("Export Mesh"), QString(),
-                                                tr("Meshes (*.obj *.ply *.glb)"));
-        case FileDialog::SaveRecording:
-            return QFileDialog::getSaveFileName(this, tr("Save Recording"), QString(),
-                                                tr("PaperFold recordings (*.paperrec)"));
-        }
-        return QString();
-    };
-    showError = [this](const QString& message) {
-        QMessageBox::critical(this, tr("PaperFold"), message);
-    };
-    askToSave = [this] {
-        return QMessageBox::warning(this, tr("PaperFold"),
-                                    tr("The sheet has unsaved changes. Save them?"),
-                                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
-    };
-    chooseImageSize = [this] {
-        bool ok = false;
-        const QString text =
-            QInputDialog::getText(this, tr("Export Image"), tr("Size in pixels (width x height):"),
-                                  QLineEdit::Normal, QStringLiteral("1920x1080"), &ok);
-        const QStringList wh = text.split(QLatin1Char('x'));
-        if (!ok || wh.size() != 2) return QSize();
-        return QSize(wh[0].trimmed().toInt(), wh[1].trimmed().toInt());
-    };
+    chooseFile = [this](FileDialog kind) { return EditorDialogs::chooseFile(this, kind, file_); };
+    showError = [this](const QString& message) { EditorDialogs::showError(this, message); };
+    askToSave = [this] { return EditorDialogs::askToSave(this); };
+    chooseImageSize = [this] { return EditorDialogs::chooseImageSize(this); };
 
     createActions();
     createMenus();
     createDocks();
-    fpsLabel_ = new QLabel(this);
-    stepLabel_ = new QLabel(this);
-    countsLabel_ = new QLabel(this);
-    statusBar()->addWidget(fpsLabel_);
-    statusBar()->addWidget(stepLabel_);
-    statusBar()->addPermanentWidget(countsLabel_);
-    panel_->showParams(params_);
-    solver_->showParams(params_);
+    readout_ = new StatusReadout(statusBar());
+    connectParameters();
+    parameters_->set(first.params);
     panel_->setToolRadius(input_->toolRadius());
 
     connect(sim_.get(), &SimulationThread::snapshotReady, this, &MainWindow::onSnapshot);
@@ -147,11 +100,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                 .arg(step));
     });
     connect(undo_, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
-    connect(panel_, &ParameterPanel::paramsEdited, this, &MainWindow::onParamsEdited);
-    connect(solver_, &SolverPanel::paramsEdited, this, &MainWindow::onParamsEdited);
-    connect(solver_, &SolverPanel::openChartRequested, this, &MainWindow::openLatestChart);
-    chartFolder =
-        QSettings().value(QStringLiteral("bench/folder"), QStringLiteral("bench")).toString();
+    connect(solver_, &SolverPanel::openChartRequested, charts_, &ChartBrowser::showLatest);
+    connect(charts_, &ChartBrowser::failed, this, [this](const QString& m) { showError(m); });
     connect(panel_, &ParameterPanel::toolRadiusChanged, input_, &ViewportInput::setToolRadius);
     connect(input_, &ViewportInput::toolRadiusChanged, panel_, &ParameterPanel::setToolRadius);
 
@@ -160,7 +110,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     if (settings.value(QStringLiteral("window/geometry")).isNull()) resize(1280, 800);
-    fpsClock_.start();
     updateTitle();
 }
 
@@ -170,8 +119,33 @@ MainWindow::~MainWindow() {
     // The input filter talks to the simulation thread, which goes before the widgets do.
     viewport_->removeEventFilter(input_);
     undo_->disconnect(this);
+    parameters_->disconnect();
     panel_->disconnect(this);
     solver_->disconnect(this);
+}
+
+// The parameters have one owner, EditorParameters: the panels turn edits into changes
+// there and show what it holds; the simulation hears what it uses; σ, a look, goes to
+// the viewport only.
+void MainWindow::connectParameters() {
+    auto edit = [this](const QString& what, int drag, const ParamChange& change) {
+        parameters_->edit(what, drag, change);
+    };
+    connect(panel_, &ParameterPanel::edited, this, edit);
+    connect(solver_, &SolverPanel::edited, this, edit);
+    connect(parameters_, &EditorParameters::changed, panel_, &ParameterPanel::showParams);
+    connect(parameters_, &EditorParameters::changed, solver_, &SolverPanel::showParams);
+    connect(parameters_, &EditorParameters::simulationChanged, this,
+            [this](const SimParams& p) { sim_->setParams(p); });
+    connect(parameters_, &EditorParameters::sigmaChanged, viewport_, [this](double sigma) {
+        RenderOptions o = viewport_->renderOptions();
+        o.sigma = sigma;
+        viewport_->setRenderOptions(o);
+    });
+}
+
+const SimParams& MainWindow::params() const {
+    return parameters_->params();
 }
 
 World MainWindow::sceneWorld(const QString& scene) const {
@@ -181,13 +155,8 @@ World MainWindow::sceneWorld(const QString& scene) const {
         options.width = panel_->sheetWidth();
         options.length = panel_->sheetLength();
     }
-    World w = makeScene(scene.toStdString(), options).value_or(*makeScene("press"));
-    w.script.sphereKeys.clear();
-    // The solver lab's fix: the paper's step would let a hanging sheet fall at 0.4 % of g.
-    w.params.gravityOutsideFilter = true;
-    w.sphere.radius = input_ ? input_->toolRadius() : ViewportInput::kDefaultToolRadius;
-    w.sphere.active = false;
-    return w;
+    return makeEditorScene(scene.toStdString(), options,
+                           input_ ? input_->toolRadius() : ViewportInput::kDefaultToolRadius);
 }
 
 QAction* MainWindow::action(const char* name) const {
@@ -274,36 +243,17 @@ void MainWindow::createActions() {
             viewport_->setRenderOptions(o);
         });
     }
-    connect(make("view.top", QKeySequence(Qt::Key_1)), &QAction::triggered, this,
-            [this] { input_->setView("top"); });
-    connect(make("view.front", QKeySequence(Qt::Key_2)), &QAction::triggered, this,
-            [this] { input_->setView("front"); });
-    connect(make("view.iso", QKeySequence(Qt::Key_3)), &QAction::triggered, this,
-            [this] { input_->setView("iso"); });
+    int key = Qt::Key_1;
+    for (const char* view : {"top", "front", "iso"})
+        connect(
+            make(qPrintable(QStringLiteral("view.") + QLatin1String(view)), QKeySequence(key++)),
+            &QAction::triggered, this, [this, view] { input_->setView(view); });
     connect(make("view.fit", QKeySequence(Qt::Key_F)), &QAction::triggered, this,
             [this] { input_->fitCamera(); });
     connect(make("help", QKeySequence::HelpContents), &QAction::triggered, this,
-            &MainWindow::showHelp);
-    connect(make("about"), &QAction::triggered, this, [this] {
-        QMessageBox::about(
-            this, tr("About PaperFold"),
-            tr("<p><b>PaperFold %1</b></p><p>Crumple and fold virtual paper in real time, "
-               "after Kang &amp; Cho, <i>A Simple and Effective Model for Interactive "
-               "Paper Folding</i>.</p>")
-                .arg(QCoreApplication::applicationVersion()));
-    });
-
-    languageGroup_ = new QActionGroup(this);
-    for (const char* code : {"", "en", "de", "ja", "ko"}) {
-        QAction* a = make(qPrintable(QStringLiteral("language.") + QLatin1String(code)));
-        a->setCheckable(true);
-        a->setData(QString::fromLatin1(code));
-        languageGroup_->addAction(a);
-        connect(a, &QAction::triggered, this, [code] {
-            installLanguage(QString::fromLatin1(code));
-            QSettings().setValue(QStringLiteral("language"), QString::fromLatin1(code));
-        });
-    }
+            [this] { HelpText::showMouseAndKeys(this); });
+    connect(make("about"), &QAction::triggered, this, [this] { HelpText::showAbout(this); });
+    languageGroup_ = createLanguageActions(this);
 }
 
 void MainWindow::createMenus() {
@@ -350,7 +300,10 @@ void MainWindow::createMenus() {
         toolBar_->addAction(action(name));
     toolBar_->addSeparator();
     for (const char* name : kOverlayActions) toolBar_->addAction(action(name));
-    updateRecentMenu();
+    recent_ = new RecentFiles(recentMenu_, this);
+    connect(recent_, &RecentFiles::openRequested, this, [this](const QString& path) {
+        if (maybeSave()) openFile(path);
+    });
 }
 
 void MainWindow::createDocks() {
@@ -376,44 +329,7 @@ void MainWindow::createDocks() {
 }
 
 void MainWindow::retranslate() {
-    auto set = [this](const char* name, const QString& text, const QString& tip = QString()) {
-        QAction* a = action(name);
-        a->setText(text);
-        a->setToolTip(tip.isEmpty() ? QString(text).remove(QLatin1Char('&')) : tip);
-    };
-    set("new.press", tr("&Press (sphere on a sheet)"));
-    set("new.drape", tr("&Drape (hanging sheet)"));
-    set("new.compress", tr("&Compress (edges pushed together)"));
-    set("new.drop", tr("D&rop (tilted sheet falls)"));
-    set("open", tr("&Open…"));
-    set("save", tr("&Save"));
-    set("saveAs", tr("Save &As…"));
-    set("saveRecording", tr("Save &Recording…"),
-        tr("Save everything done since New or Open; paperfold replay does it again"));
-    set("exportImage", tr("Export &Image…"));
-    set("exportMesh", tr("Export &Mesh…"));
-    set("quit", tr("&Quit"));
-    set("play", tr("&Play"), tr("Play or pause the simulation (Space)"));
-    set("step", tr("S&tep"), tr("Advance one step"));
-    set("reset", tr("&Reset"), tr("Start the current scene again"));
-    set("overlay.springs", tr("&Spring kinds"));
-    set("overlay.probability", tr("&Break probability"));
-    set("overlay.strain", tr("S&train"));
-    set("overlay.breaks", tr("&Recent breaks"));
-    set("overlay.wireframe", tr("Simulation &wireframe"));
-    set("view.top", tr("&Top"));
-    set("view.front", tr("&Front"));
-    set("view.iso", tr("&Isometric"));
-    set("view.fit", tr("Fit to &sheet"));
-    set("help", tr("&Mouse and Keys"));
-    set("about", tr("&About PaperFold"));
-    set("language.", tr("System language"));
-    set("language.en", QStringLiteral("English"));
-    set("language.de", QStringLiteral("Deutsch"));
-    set("language.ja", QStringLiteral("日本語"));
-    set("language.ko", QStringLiteral("한국어"));
-    action("undo")->setText(tr("&Undo"));
-    action("redo")->setText(tr("&Redo"));
+    ActionTexts::apply(this);
     undo_->setUndoLimit(0);
     fileMenu_->setTitle(tr("&File"));
     newMenu_->setTitle(tr("&New"));
@@ -437,26 +353,6 @@ void MainWindow::changeEvent(QEvent* event) {
     QMainWindow::changeEvent(event);
 }
 
-bool MainWindow::installLanguage(const QString& code) {
-    static QTranslator* current = nullptr;
-    if (current) {
-        QCoreApplication::removeTranslator(current);
-        delete current;
-        current = nullptr;
-    }
-    const QLocale locale = code.isEmpty() ? QLocale::system() : QLocale(code);
-    auto* t = new QTranslator;
-    if (!t->load(locale, QStringLiteral("paperfold"), QStringLiteral("_"),
-                 QStringLiteral(":/i18n"))) {
-        delete t;
-        // English is the source language: no translator needed.
-        return code.isEmpty() || code == QLatin1String("en");
-    }
-    QCoreApplication::installTranslator(t);
-    current = t;
-    return true;
-}
-
 void MainWindow::onSnapshot() {
     auto snap = sim_->latestSnapshot();
     if (!snap) return;
@@ -467,19 +363,8 @@ void MainWindow::onSnapshot() {
     }
     const SimulationStatus st = sim_->status();
     lastStep_ = st.step;
-    ++framesSinceFps_;
-    if (fpsClock_.elapsed() > 500) {
-        fps_ = 1000.0 * framesSinceFps_ / fpsClock_.restart();
-        framesSinceFps_ = 0;
-    }
-    fpsLabel_->setText(tr("%1 fps").arg(fps_, 0, 'f', 0));
-    stepLabel_->setText(tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0));
+    readout_->show(st);
     solver_->showStatus(st);
-    countsLabel_->setText(tr("%1 vertices · %2 springs · %3 breaks · %4 hinges")
-                              .arg(st.vertices)
-                              .arg(st.springs)
-                              .arg(st.breaks)
-                              .arg(st.hinges));
     updateTitle();
 }
 
@@ -495,28 +380,11 @@ void MainWindow::updateTitle() {
     setWindowModified(isModified());
 }
 
-void MainWindow::applyParams(const SimParams& params) {
-    params_ = params;
-    panel_->showParams(params);
-    solver_->showParams(params);
-    sim_->setParams(params);
-}
-
-void MainWindow::onParamsEdited(const SimParams& params, const QString& what, int drag) {
-    const SimParams before = params_;
-    params_ = params;
-    // Each panel edits some fields; keep both showing (and sending) the whole.
-    panel_->showParams(params_);
-    solver_->showParams(params_);
-    undo_->push(new ParameterCommand(before, params, what, drag,
-                                     [this](const SimParams& p) { applyParams(p); }));
-}
-
 void MainWindow::newScene(const QString& scene) {
     scene_ = scene;
     World w = sceneWorld(scene);
     const bool breaking = w.params.breaking; // the scene's own (drape has none)
-    w.params = params_;
+    w.params = params();
     w.params.breaking = breaking;
     sim_->replaceWorld(w);
     undo_->clear();
@@ -533,70 +401,41 @@ bool MainWindow::openFile(const QString& path) {
         showError(tr("Could not open the sheet: %1").arg(load.error));
         return false;
     }
-    params_ = load.world->params;
-    panel_->showParams(params_);
-    solver_->showParams(params_);
+    parameters_->set(load.world->params);
     savedStep_ = lastStep_ = load.world->stepCount;
     sim_->replaceWorld(*load.world);
     scene_ = QString::fromStdString(load.world->scene);
     undo_->clear();
     file_ = path;
     firstSnapshot_ = true;
-    addRecent(path);
+    recent_->add(path);
     updateTitle();
     return true;
 }
 
-template <typename T, typename Reply, typename Request>
-std::shared_ptr<const T> MainWindow::awaitReply(Reply reply, Request request) {
-    // Waits at most one simulation frame for the copy.
-    const quint64 id = nextRequest_++;
-    std::shared_ptr<const T> result;
-    QEventLoop loop;
-    auto c = connect(sim_.get(), reply, &loop, [&](quint64 got, std::shared_ptr<const T> copy) {
-        if (got != id) return;
-        result = std::move(copy);
-        loop.quit();
-    });
-    (sim_.get()->*request)(id);
-    QTimer::singleShot(5000, &loop, &QEventLoop::quit);
-    loop.exec(QEventLoop::ExcludeUserInputEvents);
-    disconnect(c);
-    return result;
-}
-
-std::shared_ptr<const World> MainWindow::fetchWorld() {
-    return awaitReply<World>(&SimulationThread::worldCopied, &SimulationThread::requestWorld);
-}
-
-std::shared_ptr<const EditLog> MainWindow::fetchRecording() {
-    return awaitReply<EditLog>(&SimulationThread::recordingCopied,
-                               &SimulationThread::requestRecording);
-}
-
 void MainWindow::saveRecording(const QString& path) {
-    const auto log = fetchRecording();
+    auto log = std::const_pointer_cast<EditLog>(sim_->copyRecording());
+    log->start.params.sigma = params().sigma; // a look: the simulation never had it
     QString error;
-    if (!log || !pf::saveRecording(*log, path, &error)) {
-        showError(tr("Could not save the recording: %1")
-                      .arg(log ? error : tr("the simulation did not answer")));
+    if (!pf::saveRecording(*log, path, &error)) {
+        showError(tr("Could not save the recording: %1").arg(error));
         return;
     }
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 3000);
 }
 
 bool MainWindow::saveFile(const QString& path) {
-    const auto world = fetchWorld();
+    auto world = std::const_pointer_cast<World>(sim_->copyWorld());
+    world->params.sigma = params().sigma; // a look: the simulation never had it
     QString error;
-    if (!world || !saveWorld(*world, path, &error)) {
-        showError(tr("Could not save the sheet: %1")
-                      .arg(world ? error : tr("the simulation did not answer")));
+    if (!saveWorld(*world, path, &error)) {
+        showError(tr("Could not save the sheet: %1").arg(error));
         return false;
     }
     file_ = path;
     savedStep_ = lastStep_ = world->stepCount;
     undo_->setClean();
-    addRecent(path);
+    recent_->add(path);
     updateTitle();
     statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), 3000);
     return true;
@@ -627,29 +466,6 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->accept();
 }
 
-void MainWindow::addRecent(const QString& path) {
-    QSettings settings;
-    QStringList recent = settings.value(QStringLiteral("recentFiles")).toStringList();
-    recent.removeAll(path);
-    recent.prepend(path);
-    while (recent.size() > kMaxRecent) recent.removeLast();
-    settings.setValue(QStringLiteral("recentFiles"), recent);
-    updateRecentMenu();
-}
-
-void MainWindow::updateRecentMenu() {
-    recentMenu_->clear();
-    const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
-    for (const QString& path : recent) {
-        QAction* a = recentMenu_->addAction(QFileInfo(path).fileName());
-        a->setToolTip(path);
-        connect(a, &QAction::triggered, this, [this, path] {
-            if (maybeSave()) openFile(path);
-        });
-    }
-    recentMenu_->setEnabled(!recent.isEmpty());
-}
-
 Vec3 MainWindow::toolTarget() const {
     return input_->toolTarget();
 }
@@ -666,14 +482,9 @@ void MainWindow::exportImage() {
     const QString path = chooseFile(FileDialog::ExportImage);
     if (path.isEmpty()) return;
     QString error;
-    auto renderer = OffscreenRenderer::create(size.width(), size.height(), &error);
-    if (!renderer) {
+    if (!exportSnapshotImage(*snap, viewport_->camera(), viewport_->renderOptions(), size.width(),
+                             size.height(), path, &error))
         showError(tr("Could not export the image: %1").arg(error));
-        return;
-    }
-    OrbitCamera camera = viewport_->camera();
-    const QImage image = renderer->render(*snap, camera, viewport_->renderOptions());
-    if (!writePng(image, path, &error)) showError(tr("Could not export the image: %1").arg(error));
 }
 
 void MainWindow::exportMesh() {
@@ -686,65 +497,9 @@ void MainWindow::exportMesh() {
         showError(tr("Choose a file ending in .obj, .ply or .glb"));
         return;
     }
-    const SurfaceMesh mesh = subdivide(snap->x, snap->tris, nullptr, snap->sigma,
-                                       viewport_->renderOptions().subdivision);
     QString error;
-    if (!writeSurface(mesh, path, format, true, &error))
+    if (!exportSnapshotMesh(*snap, viewport_->renderOptions(), path, format, &error))
         showError(tr("Could not export the mesh: %1").arg(error));
-}
-
-void MainWindow::openLatestChart() {
-    QDir dir(chartFolder);
-    QFileInfoList charts =
-        dir.entryInfoList({QStringLiteral("bench_*.png")}, QDir::Files, QDir::Time);
-    if (charts.isEmpty()) {
-        const QString picked = QFileDialog::getExistingDirectory(
-            this, tr("Folder written by 'paperfold bench'"), chartFolder);
-        if (picked.isEmpty()) return;
-        chartFolder = picked;
-        QSettings().setValue(QStringLiteral("bench/folder"), picked);
-        charts =
-            QDir(picked).entryInfoList({QStringLiteral("bench_*.png")}, QDir::Files, QDir::Time);
-    }
-    if (charts.isEmpty()) {
-        showError(
-            tr("No bench_*.png in %1. Run: paperfold bench --output-dir %1").arg(chartFolder));
-        return;
-    }
-    lastChart_ = charts.first().absoluteFilePath();
-    auto* dialog = new QDialog(this);
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->setWindowTitle(charts.first().fileName());
-    auto* layout = new QVBoxLayout(dialog);
-    auto* picture = new QLabel(dialog);
-    picture->setPixmap(QPixmap(lastChart_));
-    auto* scroll = new QScrollArea(dialog);
-    scroll->setWidget(picture);
-    layout->addWidget(scroll);
-    dialog->resize(1000, 640);
-    dialog->show();
-}
-
-void MainWindow::showHelp() {
-    QMessageBox::information(
-        this, tr("Mouse and Keys"),
-        tr("<table>"
-           "<tr><td><b>Move the mouse</b></td><td>the sphere follows the cursor over the "
-           "sheet</td></tr>"
-           "<tr><td><b>Left drag</b></td><td>push the sphere into the paper (one undo step per "
-           "stroke)</td></tr>"
-           "<tr><td><b>Ctrl + wheel</b></td><td>sphere radius</td></tr>"
-           "<tr><td><b>Right drag</b>, arrow keys</td><td>orbit the camera</td></tr>"
-           "<tr><td><b>Middle drag</b>, Shift + right drag</td><td>pan</td></tr>"
-           "<tr><td><b>Wheel</b>, + and −</td><td>zoom</td></tr>"
-           "<tr><td><b>1</b>, <b>2</b>, <b>3</b>, <b>F</b></td><td>top, front, isometric view; fit "
-           "to sheet</td></tr>"
-           "<tr><td><b>Space</b>, <b>Ctrl+.</b>, <b>Ctrl+R</b></td><td>play/pause, single step, "
-           "reset</td></tr>"
-           "<tr><td><b>Alt+1…5</b></td><td>overlays: spring kinds, break probability, strain, "
-           "recent breaks, wireframe</td></tr>"
-           "<tr><td><b>Ctrl+Z</b>, <b>Ctrl+Shift+Z</b></td><td>undo, redo</td></tr>"
-           "</table>"));
 }
 
 } // namespace pf

@@ -1,13 +1,13 @@
 #pragma once
 
 #include "Camera.h"
+#include "EditorDialogs.h"
 #include "Params.h"
 #include "Picking.h"
 #include "RenderOptions.h"
 #include "SheetSnapshot.h"
 #include "World.h"
 
-#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QMessageBox>
 #include <functional>
@@ -16,7 +16,6 @@
 class QAction;
 class QActionGroup;
 class QDockWidget;
-class QLabel;
 class QMenu;
 class QToolBar;
 class QUndoStack;
@@ -24,9 +23,12 @@ class QUndoView;
 
 namespace pf {
 
-struct EditLog;
+class ChartBrowser;
+class EditorParameters;
 class ParameterPanel;
+class RecentFiles;
 class SolverPanel;
+class StatusReadout;
 class SimulationThread;
 class Viewport;
 class ViewportInput;
@@ -41,7 +43,7 @@ class MainWindow : public QMainWindow {
     ~MainWindow() override;
 
     // Hooks the tests replace; by default they show dialogs.
-    enum class FileDialog { Open, Save, ExportImage, ExportMesh, SaveRecording };
+    using FileDialog = pf::FileDialog;
     std::function<QString(FileDialog)> chooseFile;
     std::function<void(const QString&)> showError;
     std::function<QMessageBox::StandardButton()> askToSave;
@@ -54,12 +56,11 @@ class MainWindow : public QMainWindow {
     Viewport* viewport() const { return viewport_; }
     ParameterPanel* panel() const { return panel_; }
     SolverPanel* solverPanel() const { return solver_; }
-    // Where Open Latest Chart looks for bench_*.png (the folder `paperfold bench` wrote).
-    QString chartFolder;
-    // The chart it showed last (tests read it).
-    QString lastChart() const { return lastChart_; }
+    // Open Latest Chart (the Solver dock's button).
+    ChartBrowser* charts() const { return charts_; }
     QUndoStack* undoStack() const { return undo_; }
-    const SimParams& params() const { return params_; }
+    EditorParameters* parameters() const { return parameters_; }
+    const SimParams& params() const;
     QString currentFile() const { return file_; }
     bool isModified() const;
     // The last tool pose sent to the simulation (target centre, radius, pressed).
@@ -69,8 +70,6 @@ class MainWindow : public QMainWindow {
     bool openFile(const QString& path);
     bool saveFile(const QString& path);
     void newScene(const QString& scene);
-    // Switches the interface language ("" follows the system, else "ko", "ja", "de", "en").
-    static bool installLanguage(const QString& code);
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -81,22 +80,13 @@ class MainWindow : public QMainWindow {
     void createMenus();
     void createDocks();
     void retranslate();
+    void connectParameters();
     void onSnapshot();
-    void applyParams(const SimParams& params);
-    void onParamsEdited(const SimParams& params, const QString& what, int drag);
     void updateTitle();
-    void updateRecentMenu();
-    void addRecent(const QString& path);
     bool maybeSave();
-    std::shared_ptr<const World> fetchWorld();
-    std::shared_ptr<const EditLog> fetchRecording();
-    template <typename T, typename Reply, typename Request>
-    std::shared_ptr<const T> awaitReply(Reply reply, Request request);
     void saveRecording(const QString& path);
     void exportImage();
     void exportMesh();
-    void showHelp();
-    void openLatestChart();
     World sceneWorld(const QString& scene) const;
 
     std::unique_ptr<SimulationThread> sim_;
@@ -104,7 +94,9 @@ class MainWindow : public QMainWindow {
     ViewportInput* input_ = nullptr;
     ParameterPanel* panel_ = nullptr;
     SolverPanel* solver_ = nullptr;
-    QString lastChart_;
+    EditorParameters* parameters_ = nullptr;
+    ChartBrowser* charts_ = nullptr;
+    RecentFiles* recent_ = nullptr;
     QUndoStack* undo_ = nullptr;
     QUndoView* undoView_ = nullptr;
     QDockWidget *panelDock_ = nullptr, *historyDock_ = nullptr, *solverDock_ = nullptr;
@@ -112,10 +104,9 @@ class MainWindow : public QMainWindow {
     QMenu *fileMenu_ = nullptr, *newMenu_ = nullptr, *recentMenu_ = nullptr, *editMenu_ = nullptr,
           *viewMenu_ = nullptr, *overlayMenu_ = nullptr, *languageMenu_ = nullptr,
           *simMenu_ = nullptr, *helpMenu_ = nullptr;
-    QLabel *fpsLabel_ = nullptr, *stepLabel_ = nullptr, *countsLabel_ = nullptr;
+    StatusReadout* readout_ = nullptr;
     QActionGroup* languageGroup_ = nullptr;
 
-    SimParams params_;
     QString scene_ = QStringLiteral("press");
     QString file_;
     std::int64_t savedStep_ = 0;
@@ -125,10 +116,6 @@ class MainWindow : public QMainWindow {
     // drawn hands the freed heap back to the system.
     bool releasePending_ = false;
     bool playing_ = true;
-    QElapsedTimer fpsClock_;
-    int framesSinceFps_ = 0;
-    double fps_ = 0.0;
-    quint64 nextRequest_ = 1;
 };
 
 } // namespace pf

@@ -71,14 +71,16 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     layout->addStretch();
 
     connect(stiffness_, &QDoubleSpinBox::valueChanged, this, [this](double k) {
-        params_.stiffness[static_cast<int>(SpringKind::Structural)] = k;
-        params_.stiffness[static_cast<int>(SpringKind::Crease)] = k;
-        emitEdit(QStringLiteral("stiffness"));
+        emitEdit(QStringLiteral("stiffness"), [k](SimParams& p) {
+            p.stiffness[static_cast<int>(SpringKind::Structural)] = k;
+            p.stiffness[static_cast<int>(SpringKind::Crease)] = k;
+        });
     });
     connect(bending_, &QDoubleSpinBox::valueChanged, this, [this](double k) {
-        params_.stiffness[static_cast<int>(SpringKind::Bending)] = k;
-        params_.stiffness[static_cast<int>(SpringKind::Hinge)] = k;
-        emitEdit(QStringLiteral("bending"));
+        emitEdit(QStringLiteral("bending"), [k](SimParams& p) {
+            p.stiffness[static_cast<int>(SpringKind::Bending)] = k;
+            p.stiffness[static_cast<int>(SpringKind::Hinge)] = k;
+        });
     });
     retranslate();
 }
@@ -126,16 +128,13 @@ ParameterPanel::SliderRow ParameterPanel::addSliderRow(QGridLayout* grid, int ro
 void ParameterPanel::rowEdited(int row, double value) {
     switch (row) {
     case 0:
-        params_.phi = value;
-        emitEdit(QStringLiteral("phi"));
+        emitEdit(QStringLiteral("phi"), [value](SimParams& p) { p.phi = value; });
         break;
     case 1:
-        params_.psi = value;
-        emitEdit(QStringLiteral("psi"));
+        emitEdit(QStringLiteral("psi"), [value](SimParams& p) { p.psi = value; });
         break;
     case 2:
-        params_.sigma = value;
-        emitEdit(QStringLiteral("sigma"));
+        emitEdit(QStringLiteral("sigma"), [value](SimParams& p) { p.sigma = value; });
         break;
     default:
         emit toolRadiusChanged(value / 100.0);
@@ -143,14 +142,13 @@ void ParameterPanel::rowEdited(int row, double value) {
     }
 }
 
-void ParameterPanel::emitEdit(const QString& what) {
+void ParameterPanel::emitEdit(const QString& what, const ParamChange& change) {
     if (updating_) return;
-    emit paramsEdited(params_, what, drag_);
+    emit edited(what, drag_, change);
 }
 
 void ParameterPanel::showParams(const SimParams& params) {
     updating_ = true;
-    params_ = params;
     phi_.spin->setValue(params.phi);
     phi_.slider->setValue(static_cast<int>(std::lround(params.phi * phi_.scale)));
     psi_.spin->setValue(params.psi);

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Params.h"
+#include "EditorParameters.h"
 
 #include <QWidget>
 
@@ -35,9 +35,9 @@ class ParameterPanel : public QWidget {
     QSlider* sigmaSlider() const { return sigma_.slider; }
 
   signals:
-    // A user edit. `drag` numbers a slider drag: edits with the same drag number
-    // belong to one gesture (and one undo step).
-    void paramsEdited(const pf::SimParams& params, const QString& what, int drag);
+    // A user edit of the parameter `what`. `drag` numbers a slider drag: edits with the
+    // same drag number belong to one gesture (and one undo step).
+    void edited(const QString& what, int drag, const pf::ParamChange& change);
     void toolRadiusChanged(double metres);
 
   protected:
@@ -53,10 +53,9 @@ class ParameterPanel : public QWidget {
     SliderRow addSliderRow(QGridLayout* grid, int row, double min, double max, int decimals,
                            double scale);
     void retranslate();
-    void emitEdit(const QString& what);
+    void emitEdit(const QString& what, const ParamChange& change);
     void rowEdited(int row, double value);
 
-    SimParams params_;
     SliderRow phi_, psi_, sigma_, radius_;
     QGroupBox* advanced_ = nullptr;
     QLabel *stiffnessLabel_ = nullptr, *bendingLabel_ = nullptr, *resolutionLabel_ = nullptr,

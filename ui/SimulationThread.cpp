@@ -8,14 +8,12 @@
 namespace pf {
 
 SimulationThread::SimulationThread(World initial, QObject* parent) : QObject(parent) {
-    qRegisterMetaType<std::shared_ptr<const World>>("std::shared_ptr<const World>");
-    qRegisterMetaType<std::shared_ptr<const EditLog>>("std::shared_ptr<const EditLog>");
-    qRegisterMetaType<pf::SimParams>("pf::SimParams");
-    worker_ = new SimulationWorker(std::move(initial), this);
+    worker_ = new SimulationWorker(std::move(initial), channel_);
+    forwardWorkerSignals();
     worker_->moveToThread(&thread_);
     connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
-    connect(this, &SimulationThread::commandsPosted, worker_, &SimulationWorker::runCommands,
-            Qt::QueuedConnection);
+    channel_.wake = connect(this, &SimulationThread::commandsPosted, worker_,
+                            &SimulationWorker::runCommands, Qt::QueuedConnection);
     connect(this, &SimulationThread::guiWorkPosted, this, &SimulationThread::deliverToGui,
             Qt::QueuedConnection);
     connect(this, &SimulationThread::snapshotPosted, this, &SimulationThread::notifySnapshot,
@@ -28,16 +26,32 @@ SimulationThread::SimulationThread(World initial, QObject* parent) : QObject(par
 SimulationThread::~SimulationThread() {
     thread_.quit();
     thread_.wait();
-    // QThread::wait synchronises inside Qt, where ThreadSanitizer cannot see it; the
-    // worker's destructor signals through this lock, which it can.
-    std::unique_lock lock(workerGoneMutex_);
-    workerGoneChanged_.wait(lock, [this] { return workerGone_; });
+    channel_.waitForWorkerGone();
 }
 
-void SimulationThread::markWorkerGone() {
-    std::lock_guard lock(workerGoneMutex_);
-    workerGone_ = true;
-    workerGoneChanged_.notify_all();
+void SimulationThread::forwardWorkerSignals() {
+    // Direct: these run on the simulation thread as the worker emits, and hand the
+    // emission of this object's signal to the GUI thread.
+    auto direct = [this](auto signal, auto forward) {
+        connect(worker_, signal, this, forward, Qt::DirectConnection);
+    };
+    direct(&SimulationWorker::published,
+           [this](std::shared_ptr<const SheetSnapshot> snapshot, const SimulationStatus& status) {
+               publish(std::move(snapshot), status);
+           });
+    direct(&SimulationWorker::strokeRecorded, [this](int stroke, int events) {
+        emitOnGuiThread([this, stroke, events] { emit strokeRecorded(stroke, events); });
+    });
+    direct(&SimulationWorker::strokeUndone, [this](int stroke, int n) {
+        emitOnGuiThread([this, stroke, n] { emit strokeUndone(stroke, n); });
+    });
+    direct(&SimulationWorker::strokeRedone, [this](int stroke, int n) {
+        emitOnGuiThread([this, stroke, n] { emit strokeRedone(stroke, n); });
+    });
+    direct(&SimulationWorker::worldReplaced,
+           [this] { emitOnGuiThread([this] { emit worldReplaced(); }); });
+    direct(&SimulationWorker::diverged,
+           [this](qint64 step) { emitOnGuiThread([this, step] { emit diverged(step); }); });
 }
 
 std::shared_ptr<const SheetSnapshot> SimulationThread::latestSnapshot() const {
@@ -76,7 +90,7 @@ void SimulationThread::deliverToGui() {
 }
 
 void SimulationThread::post(std::function<void(SimulationWorker&)> command) {
-    if (toWorker_.post(std::move(command))) emit commandsPosted(QPrivateSignal());
+    if (channel_.commands.post(std::move(command))) emit commandsPosted(QPrivateSignal());
 }
 
 #define PF_POST(call) post([=](SimulationWorker& w) { w.call; })
@@ -102,28 +116,41 @@ void SimulationThread::undoStroke(int stroke) {
 void SimulationThread::redoStroke(int stroke) {
     PF_POST(redoStroke(stroke));
 }
-void SimulationThread::requestWorld(quint64 requestId) {
-    PF_POST(copyWorld(requestId));
-}
-void SimulationThread::requestRecording(quint64 requestId) {
-    PF_POST(copyRecording(requestId));
-}
 
 #undef PF_POST
 
-void SimulationThread::sync() {
+void SimulationThread::callOnWorker(const std::function<void(SimulationWorker&)>& read) {
     // A condition variable rather than a blocking queued call: its wait is one that
     // ThreadSanitizer sees, so what the worker did is ordered before what follows here.
     std::mutex m;
     std::condition_variable applied;
     bool done = false;
-    post([&](SimulationWorker&) {
+    post([&](SimulationWorker& w) {
+        read(w);
         std::lock_guard lock(m);
         done = true;
         applied.notify_one();
     });
     std::unique_lock lock(m);
     applied.wait(lock, [&] { return done; });
+}
+
+void SimulationThread::sync() {
+    callOnWorker([](SimulationWorker&) {});
+}
+
+std::shared_ptr<const World> SimulationThread::copyWorld() {
+    std::shared_ptr<const World> copy;
+    callOnWorker(
+        [&](SimulationWorker& w) { copy = std::make_shared<const World>(w.session().world()); });
+    return copy;
+}
+
+std::shared_ptr<const EditLog> SimulationThread::copyRecording() {
+    std::shared_ptr<const EditLog> copy;
+    callOnWorker(
+        [&](SimulationWorker& w) { copy = std::make_shared<const EditLog>(w.session().log()); });
+    return copy;
 }
 
 } // namespace pf

@@ -3,6 +3,8 @@
 #include "CrossThreadQueue.h"
 #include "EditSession.h"
 #include "SheetSnapshot.h"
+#include "SimulationChannel.h"
+#include "SimulationStatus.h"
 #include "World.h"
 
 #include <QObject>
@@ -15,15 +17,6 @@
 namespace pf {
 
 class SimulationWorker;
-
-// Live statistics of the running simulation, for the status bar and the tests.
-struct SimulationStatus {
-    std::int64_t step = 0;
-    double stepSeconds = 0.0; // wall time of one step, averaged over the last frame
-    int vertices = 0, springs = 0, breaks = 0, hinges = 0;
-    double maxStrain = 0.0, rmsStrain = 0.0; // |l/l0 - 1| over structural springs
-    bool playing = false;
-};
 
 // The simulation on its own thread. The GUI talks to it only through these
 // methods, which queue a command that the thread applies between frames, and reads
@@ -49,11 +42,11 @@ class SimulationThread : public QObject {
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
     void undoStroke(int stroke);
     void redoStroke(int stroke);
-    // Asks for a copy of the whole World; answered by worldCopied(requestId, ...).
-    void requestWorld(quint64 requestId);
-    // Asks for the session since the last New or Open, as a recording; answered by
-    // recordingCopied(requestId, ...).
-    void requestRecording(quint64 requestId);
+    // A copy of the whole World, and the session since the last New or Open as a
+    // recording. They wait for the simulation thread to finish its frame (a save is
+    // worth that), without a nested event loop: nothing else runs meanwhile.
+    std::shared_ptr<const World> copyWorld();
+    std::shared_ptr<const EditLog> copyRecording();
 
     // Waits until every command queued so far has been applied (tests and shutdown only).
     void sync();
@@ -64,12 +57,9 @@ class SimulationThread : public QObject {
     void strokeRecorded(int stroke, int events);
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
-    void worldCopied(quint64 requestId, std::shared_ptr<const World> world);
-    void recordingCopied(quint64 requestId, std::shared_ptr<const EditLog> log);
     // A replaceWorld was applied: the old World is gone and a snapshot of the new one
     // was published (its snapshotReady comes first).
     void worldReplaced();
-    void paramsApplied(const pf::SimParams& params);
     void diverged(qint64 step);
 
     // Internal wake-ups, connected queued at construction. They carry nothing and name
@@ -85,19 +75,18 @@ class SimulationThread : public QObject {
     void deliverToGui();
 
   private:
-    friend class SimulationWorker;
+    // Called on the simulation thread.
     void publish(std::shared_ptr<const SheetSnapshot> snapshot, const SimulationStatus& status);
     // Called on the simulation thread: `emitSignal` runs (and emits) on the GUI thread.
     void emitOnGuiThread(std::function<void()> emitSignal);
+    // Carries the worker's signals to this object's, on the GUI thread.
+    void forwardWorkerSignals();
     void post(std::function<void(SimulationWorker&)> command);
-    // Called last by the worker's destructor, on the simulation thread.
-    void markWorkerGone();
+    // Runs `read` on the simulation thread between frames and waits for it.
+    void callOnWorker(const std::function<void(SimulationWorker&)>& read);
 
-    CrossThreadQueue<SimulationWorker&> toWorker_;
+    SimulationChannel channel_;
     CrossThreadQueue<> toGui_;
-    std::mutex workerGoneMutex_;
-    std::condition_variable workerGoneChanged_;
-    bool workerGone_ = false;
 
     QThread thread_;
     SimulationWorker* worker_ = nullptr; // lives on thread_

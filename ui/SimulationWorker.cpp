@@ -1,28 +1,28 @@
 #include "SimulationWorker.h"
 
 #include "SheetStats.h"
-#include "SimulationThread.h"
+#include "SimulationChannel.h"
 
 #include <QElapsedTimer>
 #include <cmath>
 
 namespace pf {
 
-SimulationWorker::SimulationWorker(World world, SimulationThread* owner)
-    : session_(std::move(world)), owner_(owner), timer_(this) {
+SimulationWorker::SimulationWorker(World world, SimulationChannel& channel)
+    : session_(std::move(world)), channel_(channel), timer_(this) {
     timer_.setTimerType(Qt::PreciseTimer);
     connect(&timer_, &QTimer::timeout, this, &SimulationWorker::frame);
 }
 
 SimulationWorker::~SimulationWorker() {
-    // Drop the connections from the owner here, not in ~QObject: after markWorkerGone
-    // the owner may be destroyed, and ~QObject would read it to disconnect.
-    disconnect(owner_, nullptr, this, nullptr);
-    owner_->markWorkerGone();
+    // Drop the GUI's wake-up here, not in ~QObject: after markWorkerGone the GUI side
+    // may be destroyed, and ~QObject would read it to disconnect.
+    disconnect(channel_.wake);
+    channel_.markWorkerGone();
 }
 
 void SimulationWorker::runCommands() {
-    for (const auto& command : owner_->toWorker_.takeAll()) command(*this);
+    for (const auto& command : channel_.commands.takeAll()) command(*this);
 }
 
 void SimulationWorker::start() {
@@ -45,59 +45,39 @@ void SimulationWorker::stepOnce() {
 
 void SimulationWorker::setParams(const SimParams& params) {
     session_.setParams(params);
-    owner_->emitOnGuiThread([o = owner_, params] { emit o->paramsApplied(params); });
     publish(0.0);
 }
 
 void SimulationWorker::replaceWorld(const World& world) {
     session_.replaceWorld(world);
     publish(0.0);
-    owner_->emitOnGuiThread([o = owner_] { emit o->worldReplaced(); });
+    emit worldReplaced();
 }
 
 void SimulationWorker::setTool(const Vec3& target, double radius, bool visible, bool pressed) {
     const auto ended = session_.setTool(target, radius, visible, pressed);
     if (!ended) return;
-    owner_->emitOnGuiThread([o = owner_, stroke = ended->stroke, count = ended->events] {
-        emit o->strokeRecorded(stroke, count);
-    });
+    emit strokeRecorded(ended->stroke, ended->events);
 }
 
 void SimulationWorker::undoStroke(int stroke) {
     const auto recovered = session_.undoStroke(stroke);
     if (!recovered) return;
-    owner_->emitOnGuiThread(
-        [o = owner_, stroke, n = *recovered] { emit o->strokeUndone(stroke, n); });
+    emit strokeUndone(stroke, *recovered);
     publish(0.0);
 }
 
 void SimulationWorker::redoStroke(int stroke) {
     const auto reapplied = session_.redoStroke(stroke);
     if (!reapplied) return;
-    owner_->emitOnGuiThread(
-        [o = owner_, stroke, n = *reapplied] { emit o->strokeRedone(stroke, n); });
+    emit strokeRedone(stroke, *reapplied);
     publish(0.0);
-}
-
-void SimulationWorker::copyWorld(quint64 requestId) {
-    owner_->emitOnGuiThread(
-        [o = owner_, requestId, world = std::make_shared<const World>(session_.world())] {
-            emit o->worldCopied(requestId, world);
-        });
-}
-
-void SimulationWorker::copyRecording(quint64 requestId) {
-    owner_->emitOnGuiThread(
-        [o = owner_, requestId, log = std::make_shared<const EditLog>(session_.log())] {
-            emit o->recordingCopied(requestId, log);
-        });
 }
 
 void SimulationWorker::advance(int steps) {
     if (session_.advance(steps) == StepStatus::Ok) return;
     playing_ = false;
-    owner_->emitOnGuiThread(
-        [o = owner_, step = session_.world().stepCount] { emit o->diverged(step); });
+    emit diverged(session_.world().stepCount);
 }
 
 void SimulationWorker::frame() {
@@ -126,7 +106,7 @@ void SimulationWorker::publish(double stepSeconds) {
     st.maxStrain = stats.maxStrain;
     st.rmsStrain = stats.rmsStrain;
     st.playing = playing_;
-    owner_->publish(std::make_shared<const SheetSnapshot>(makeSnapshot(w)), st);
+    emit published(std::make_shared<const SheetSnapshot>(makeSnapshot(session_.simulation())), st);
 }
 
 } // namespace pf

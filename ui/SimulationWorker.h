@@ -1,22 +1,25 @@
 #pragma once
 
 #include "EditSession.h"
+#include "SheetSnapshot.h"
+#include "SimulationStatus.h"
 
 #include <QObject>
 #include <QTimer>
-#include <vector>
+#include <memory>
 
 namespace pf {
 
-class SimulationThread;
+class SimulationChannel;
 
-// Owns the Simulation; lives on the simulation thread. Every slot runs there,
-// between frames, so commands never interleave with a step.
+// Owns the editing session; lives on the simulation thread. Every command runs there,
+// between frames, so commands never interleave with a step. Its signals are emitted on
+// the simulation thread (SimulationThread carries them to the GUI).
 class SimulationWorker : public QObject {
     Q_OBJECT
 
   public:
-    SimulationWorker(World world, SimulationThread* owner);
+    SimulationWorker(World world, SimulationChannel& channel);
     ~SimulationWorker() override;
 
     static constexpr double kFrameSeconds = 1.0 / 60.0;
@@ -29,11 +32,19 @@ class SimulationWorker : public QObject {
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
     void undoStroke(int stroke);
     void redoStroke(int stroke);
-    void copyWorld(quint64 requestId);
-    void copyRecording(quint64 requestId);
+    const EditSession& session() const { return session_; }
 
-    // Applies every command the GUI queued (SimulationThread::post).
+    // Applies every command the GUI queued.
     void runCommands();
+
+  signals:
+    void published(std::shared_ptr<const pf::SheetSnapshot> snapshot,
+                   const pf::SimulationStatus& status);
+    void strokeRecorded(int stroke, int events);
+    void strokeUndone(int stroke, int recovered);
+    void strokeRedone(int stroke, int reapplied);
+    void worldReplaced();
+    void diverged(qint64 step);
 
   private:
     void frame();
@@ -41,7 +52,7 @@ class SimulationWorker : public QObject {
     void publish(double stepSeconds);
 
     EditSession session_;
-    SimulationThread* owner_;
+    SimulationChannel& channel_;
     QTimer timer_;
     bool playing_ = true;
 };

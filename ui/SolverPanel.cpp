@@ -54,37 +54,34 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
     grid->setRowStretch(r, 1);
 
     connect(integrator_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-        params_.integrator = name.toStdString();
-        emitEdit(QStringLiteral("integrator"));
+        emitEdit(QStringLiteral("integrator"),
+                 [n = name.toStdString()](SimParams& p) { p.integrator = n; });
     });
     connect(material_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-        if (materialPreset(name.toStdString(), params_.material))
-            emitEdit(QStringLiteral("material"));
+        Material m;
+        if (materialPreset(name.toStdString(), m))
+            emitEdit(QStringLiteral("material"), [m](SimParams& p) { p.material = m; });
     });
     connect(iterations_, &QSpinBox::valueChanged, this, [this](int k) {
-        params_.iterations = k;
-        emitEdit(QStringLiteral("iterations"));
+        emitEdit(QStringLiteral("iterations"), [k](SimParams& p) { p.iterations = k; });
     });
     connect(stepsPerSecond_, &QSpinBox::valueChanged, this, [this](int n) {
-        params_.dt = 1.0 / n;
-        emitEdit(QStringLiteral("dt"));
+        emitEdit(QStringLiteral("dt"), [n](SimParams& p) { p.dt = 1.0 / n; });
     });
     connect(gravityOutside_, &QCheckBox::toggled, this, [this](bool on) {
-        params_.gravityOutsideFilter = on;
-        emitEdit(QStringLiteral("gravity"));
+        emitEdit(QStringLiteral("gravity"), [on](SimParams& p) { p.gravityOutsideFilter = on; });
     });
     connect(openChart_, &QPushButton::clicked, this, &SolverPanel::openChartRequested);
     retranslate();
 }
 
-void SolverPanel::emitEdit(const QString& what) {
+void SolverPanel::emitEdit(const QString& what, const ParamChange& change) {
     if (updating_) return;
-    emit paramsEdited(params_, what, --edits_); // each edit is its own undo step
+    emit edited(what, --edits_, change); // each edit is its own undo step
 }
 
 void SolverPanel::showParams(const SimParams& params) {
     updating_ = true;
-    params_ = params;
     integrator_->setCurrentText(QString::fromStdString(params.integrator));
     material_->setCurrentText(QString::fromStdString(params.material.name));
     iterations_->setValue(params.iterations);

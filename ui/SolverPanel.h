@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Params.h"
+#include "EditorParameters.h"
 
 #include <QWidget>
 
@@ -32,7 +32,8 @@ class SolverPanel : public QWidget {
     QLabel* strainLabel() const { return strain_; }
 
   signals:
-    void paramsEdited(const pf::SimParams& params, const QString& what, int drag);
+    // A user edit of the parameter `what` (each its own undo step).
+    void edited(const QString& what, int drag, const pf::ParamChange& change);
     void openChartRequested();
 
   protected:
@@ -40,9 +41,8 @@ class SolverPanel : public QWidget {
 
   private:
     void retranslate();
-    void emitEdit(const QString& what);
+    void emitEdit(const QString& what, const ParamChange& change);
 
-    SimParams params_;
     int edits_ = 0;
     bool updating_ = false;
     QLabel *integratorLabel_ = nullptr, *iterationsLabel_ = nullptr, *dtLabel_ = nullptr,

@@ -33,7 +33,7 @@ OrbitCamera fitted(const SheetSnapshot& s, double aspect) {
 int offscreen() {
     Simulation sim(*makeScene("press"));
     for (int k = 0; k < 300; ++k) sim.step();
-    const SheetSnapshot snap = makeSnapshot(sim.world());
+    const SheetSnapshot snap = makeSnapshot(sim);
     QString error;
     auto r = OffscreenRenderer::create(1920, 1080, &error);
     if (!r) {
@@ -65,7 +65,7 @@ int viewport() {
     RenderOptions o;
     o.subdivision = 3;
     view.setRenderOptions(o);
-    auto first = std::make_shared<SheetSnapshot>(makeSnapshot(sim.world()));
+    auto first = std::make_shared<SheetSnapshot>(makeSnapshot(sim));
     view.setCamera(fitted(*first, 1280.0 / 720));
     view.setSnapshot(first);
     view.show();
@@ -80,7 +80,7 @@ int viewport() {
         if (last >= 0) frameGaps.push_back((now - last) * 1e-9);
         last = now;
         for (int k = 0; k < 4; ++k) sim.step();
-        view.setSnapshot(std::make_shared<SheetSnapshot>(makeSnapshot(sim.world())));
+        view.setSnapshot(std::make_shared<SheetSnapshot>(makeSnapshot(sim)));
         if (frameGaps.size() >= 240) qApp->quit();
     });
     QTimer::singleShot(60000, qApp, &QApplication::quit);

@@ -7,7 +7,6 @@
 // Exit status 1 if the replay does not end exactly where the editor is.
 #include "MainWindow.h"
 #include "ParameterPanel.h"
-#include "QueuedSignalSpy.h"
 #include "RandomStroke.h"
 #include "RecordingFile.h"
 #include "SheetStats.h"
@@ -81,12 +80,7 @@ int main(int argc, char** argv) {
     window.action("saveRecording")->trigger();
     if (!lastError.isEmpty()) return 1;
 
-    QueuedSignalSpy copied(window.simulation(), &SimulationThread::worldCopied);
-    window.simulation()->requestWorld(42);
-    t.restart();
-    while (copied.count() < 1 && t.elapsed() < 5000) QTest::qWait(5);
-    if (copied.count() < 1) return 2;
-    const auto editor = copied.takeFirst().at(1).value<std::shared_ptr<const World>>();
+    const auto editor = window.simulation()->copyWorld();
 
     const RecordingLoad load = loadRecording(recording);
     if (!load.log) {

@@ -1,0 +1,51 @@
+#include "ActionTexts.h"
+
+#include <QAction>
+
+namespace pf {
+
+void ActionTexts::apply(const QObject* window) {
+    auto action = [window](const char* name) {
+        return window->findChild<QAction*>(QLatin1String(name));
+    };
+    auto set = [&](const char* name, const QString& text, const QString& tip = QString()) {
+        QAction* a = action(name);
+        a->setText(text);
+        a->setToolTip(tip.isEmpty() ? QString(text).remove(QLatin1Char('&')) : tip);
+    };
+    set("new.press", tr("&Press (sphere on a sheet)"));
+    set("new.drape", tr("&Drape (hanging sheet)"));
+    set("new.compress", tr("&Compress (edges pushed together)"));
+    set("new.drop", tr("D&rop (tilted sheet falls)"));
+    set("open", tr("&Open…"));
+    set("save", tr("&Save"));
+    set("saveAs", tr("Save &As…"));
+    set("saveRecording", tr("Save &Recording…"),
+        tr("Save everything done since New or Open; paperfold replay does it again"));
+    set("exportImage", tr("Export &Image…"));
+    set("exportMesh", tr("Export &Mesh…"));
+    set("quit", tr("&Quit"));
+    set("play", tr("&Play"), tr("Play or pause the simulation (Space)"));
+    set("step", tr("S&tep"), tr("Advance one step"));
+    set("reset", tr("&Reset"), tr("Start the current scene again"));
+    set("overlay.springs", tr("&Spring kinds"));
+    set("overlay.probability", tr("&Break probability"));
+    set("overlay.strain", tr("S&train"));
+    set("overlay.breaks", tr("&Recent breaks"));
+    set("overlay.wireframe", tr("Simulation &wireframe"));
+    set("view.top", tr("&Top"));
+    set("view.front", tr("&Front"));
+    set("view.iso", tr("&Isometric"));
+    set("view.fit", tr("Fit to &sheet"));
+    set("help", tr("&Mouse and Keys"));
+    set("about", tr("&About PaperFold"));
+    set("language.", tr("System language"));
+    set("language.en", QStringLiteral("English"));
+    set("language.de", QStringLiteral("Deutsch"));
+    set("language.ja", QStringLiteral("日本語"));
+    set("language.ko", QStringLiteral("한국어"));
+    action("undo")->setText(tr("&Undo"));
+    action("redo")->setText(tr("&Redo"));
+}
+
+} // namespace pf

@@ -1,0 +1,18 @@
+#pragma once
+
+#include <QCoreApplication>
+
+class QObject;
+
+namespace pf {
+
+// The words on the editor's actions (menu entries, tool buttons and their tips), in the
+// current language. The actions are found by object name among `window`'s children.
+class ActionTexts {
+    Q_DECLARE_TR_FUNCTIONS(pf::ActionTexts)
+
+  public:
+    static void apply(const QObject* window);
+};
+
+} // namespace pf

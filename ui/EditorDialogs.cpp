@@ -1,0 +1,48 @@
+#include "EditorDialogs.h"
+
+#include <QFileDialog>
+#include <QInputDialog>
+
+namespace pf {
+
+QString EditorDialogs::chooseFile(QWidget* parent, FileDialog kind, const QString& current) {
+    const QString sheets = tr("PaperFold sheets (*.paper)");
+    switch (kind) {
+    case FileDialog::Open:
+        return QFileDialog::getOpenFileName(parent, tr("Open Sheet"), QString(), sheets);
+    case FileDialog::Save:
+        return QFileDialog::getSaveFileName(parent, tr("Save Sheet"), current, sheets);
+    case FileDialog::ExportImage:
+        return QFileDialog::getSaveFileName(parent, tr("Export Image"), QString(),
+                                            tr("PNG images (*.png)"));
+    case FileDialog::ExportMesh:
+        return QFileDialog::getSaveFileName(parent, tr("Export Mesh"), QString(),
+                                            tr("Meshes (*.obj *.ply *.glb)"));
+    case FileDialog::SaveRecording:
+        return QFileDialog::getSaveFileName(parent, tr("Save Recording"), QString(),
+                                            tr("PaperFold recordings (*.paperrec)"));
+    }
+    return QString();
+}
+
+void EditorDialogs::showError(QWidget* parent, const QString& message) {
+    QMessageBox::critical(parent, tr("PaperFold"), message);
+}
+
+QMessageBox::StandardButton EditorDialogs::askToSave(QWidget* parent) {
+    return QMessageBox::warning(parent, tr("PaperFold"),
+                                tr("The sheet has unsaved changes. Save them?"),
+                                QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+}
+
+QSize EditorDialogs::chooseImageSize(QWidget* parent) {
+    bool ok = false;
+    const QString text =
+        QInputDialog::getText(parent, tr("Export Image"), tr("Size in pixels (width x height):"),
+                              QLineEdit::Normal, QStringLiteral("1920x1080"), &ok);
+    const QStringList wh = text.split(QLatin1Char('x'));
+    if (!ok || wh.size() != 2) return QSize();
+    return QSize(wh[0].trimmed().toInt(), wh[1].trimmed().toInt());
+}
+
+} // namespace pf

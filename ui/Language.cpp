@@ -1,0 +1,51 @@
+#include "Language.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QCoreApplication>
+#include <QLocale>
+#include <QSettings>
+#include <QTranslator>
+
+namespace pf {
+
+bool installLanguage(const QString& code) {
+    static QTranslator* current = nullptr;
+    if (current) {
+        QCoreApplication::removeTranslator(current);
+        delete current;
+        current = nullptr;
+    }
+    const QLocale locale = code.isEmpty() ? QLocale::system() : QLocale(code);
+    auto* t = new QTranslator;
+    if (!t->load(locale, QStringLiteral("paperfold"), QStringLiteral("_"),
+                 QStringLiteral(":/i18n"))) {
+        delete t;
+        // English is the source language: no translator needed.
+        return code.isEmpty() || code == QLatin1String("en");
+    }
+    QCoreApplication::installTranslator(t);
+    current = t;
+    return true;
+}
+
+QActionGroup* createLanguageActions(QObject* parent) {
+    auto* group = new QActionGroup(parent);
+    const QString saved = QSettings().value(QStringLiteral("language")).toString();
+    for (const char* c : {"", "en", "de", "ja", "ko"}) {
+        const QString code = QString::fromLatin1(c);
+        auto* a = new QAction(parent);
+        a->setObjectName(QStringLiteral("language.") + code);
+        a->setCheckable(true);
+        a->setChecked(code == saved);
+        a->setData(code);
+        group->addAction(a);
+        QObject::connect(a, &QAction::triggered, parent, [code] {
+            installLanguage(code);
+            QSettings().setValue(QStringLiteral("language"), code);
+        });
+    }
+    return group;
+}
+
+} // namespace pf

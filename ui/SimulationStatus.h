@@ -1,0 +1,16 @@
+#pragma once
+
+#include <cstdint>
+
+namespace pf {
+
+// Live statistics of the running simulation, for the status bar and the tests.
+struct SimulationStatus {
+    std::int64_t step = 0;
+    double stepSeconds = 0.0; // wall time of one step, averaged over the last frame
+    int vertices = 0, springs = 0, breaks = 0, hinges = 0;
+    double maxStrain = 0.0, rmsStrain = 0.0; // |l/l0 - 1| over structural springs
+    bool playing = false;
+};
+
+} // namespace pf

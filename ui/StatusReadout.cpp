@@ -1,0 +1,31 @@
+#include "StatusReadout.h"
+
+#include <QLabel>
+#include <QStatusBar>
+
+namespace pf {
+
+StatusReadout::StatusReadout(QStatusBar* bar)
+    : QObject(bar), fps_(new QLabel(bar)), step_(new QLabel(bar)), counts_(new QLabel(bar)) {
+    bar->addWidget(fps_);
+    bar->addWidget(step_);
+    bar->addPermanentWidget(counts_);
+    clock_.start();
+}
+
+void StatusReadout::show(const SimulationStatus& st) {
+    ++frames_;
+    if (clock_.elapsed() > 500) {
+        fpsValue_ = 1000.0 * frames_ / clock_.restart();
+        frames_ = 0;
+    }
+    fps_->setText(tr("%1 fps").arg(fpsValue_, 0, 'f', 0));
+    step_->setText(tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0));
+    counts_->setText(tr("%1 vertices · %2 springs · %3 breaks · %4 hinges")
+                         .arg(st.vertices)
+                         .arg(st.springs)
+                         .arg(st.breaks)
+                         .arg(st.hinges));
+}
+
+} // namespace pf
