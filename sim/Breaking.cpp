@@ -267,10 +267,12 @@ int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t s
     scratch.probability.assign(static_cast<std::size_t>(count), 0.0f);
     for (Index s = 0; s < count; ++s) {
         if (!breakCandidate(sheet, s)) continue;
-        const double P = candidateProbability(sheet, normals, s, params.phi);
-        scratch.probability[s] = static_cast<float>(P);
+        // A triangle split in this pass may have the new vertex opposite, which has no
+        // normal yet: its edges wait for the next step (and show 0 until then).
         const auto& faces = sheet.springs.faces[s];
         if (scratch.touched[faces[0]] || scratch.touched[faces[1]]) continue;
+        const double P = candidateProbability(sheet, normals, s, params.phi);
+        scratch.probability[s] = static_cast<float>(P);
         const double p = breakProbabilityPerStep(P, params.dt, params.breakReferenceStep);
         if (!(rng.uniform() < p)) continue;
         const Index ev = breakEdge(sheet, s, normals, params.psi, step);

@@ -16,12 +16,14 @@
 #include <QComboBox>
 #include <QDateTime>
 #include <QDialog>
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QMenuBar>
 #include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
@@ -392,6 +394,100 @@ class TestEditor : public QObject {
         QDialog* shown = window->findChild<QDialog*>();
         QVERIFY(shown && shown->isVisible());
         shown->close();
+    }
+
+    // Typing a value commits it once, on Enter: "0.1" typed over 0.10 gives 0.25 → 0.1
+    // and one undo entry, not one per keystroke (nor a reformat under the cursor).
+    void typingIntoASpinBoxGivesTheTypedValueAndOneUndoStep() {
+        QDoubleSpinBox* spin = window->panel()->phiSpin();
+        window->panel()->phiSlider()->setValue(90);
+        window->undoStack()->clear();
+        spin->setFocus();
+        spin->selectAll();
+        QTest::keyClicks(spin, QStringLiteral("0.1"));
+        QCOMPARE(window->params().phi, 0.90); // nothing committed while typing
+        QTest::keyClick(spin, Qt::Key_Return);
+        QCOMPARE(window->params().phi, 0.10);
+        QCOMPARE(window->undoStack()->count(), 1);
+        window->simulation()->sync();
+        QCOMPARE(worldOf(*window)->params.phi, 0.10);
+    }
+
+    void sigmaHasTheSameRangeAsTheCommandLine() {
+        QCOMPARE(window->panel()->sigmaSlider()->maximum(), 400); // σ ∈ [0, 4]
+        window->panel()->sigmaSlider()->setValue(400);
+        QCOMPARE(window->params().sigma, 4.0);
+    }
+
+    void thePlayActionSaysWhatItWillDo() {
+        QAction* play = window->action("play");
+        play->setChecked(true);
+        QCOMPARE(play->text(), QStringLiteral("&Pause"));
+        play->setChecked(false);
+        QCOMPARE(play->text(), QStringLiteral("&Play"));
+    }
+
+    void aPushWhilePausedSaysHowToPlay() {
+        const QPoint p = viewportCentre(*window);
+        moveMouse(window->viewport(), p);
+        QTest::mousePress(window->viewport(), Qt::LeftButton, {}, p);
+        QVERIFY(window->statusBar()->currentMessage().contains(QStringLiteral("Paused")));
+        QTest::mouseRelease(window->viewport(), Qt::LeftButton, {}, p);
+    }
+
+    // Modified means "differs from the file": an edit and its undo cancel out.
+    void theModifiedMarkerFollowsTheSavedSheet() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("marker.paper"));
+        for (int k = 0; k < 30; ++k) window->simulation()->stepOnce();
+        settledStatus(*window);
+        QVERIFY(window->saveFile(path));
+        QVERIFY(!window->isModified());
+        // The sheet lies still on the desk: stepping it changes nothing, so nothing to save.
+        const std::int64_t saved = settledStatus(*window).step;
+        for (int k = 0; k < 30; ++k) window->simulation()->stepOnce();
+        QCOMPARE(settledStatus(*window).step, saved + 30);
+        QVERIFY(!window->isModified());
+        window->panel()->phiSlider()->setValue(70);
+        QVERIFY(window->isModified());
+        window->undoStack()->undo();
+        QVERIFY(!window->isModified());
+
+        // A stroke moves the sheet; its undo gives back the saved sheet.
+        QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        QPoint p = viewportCentre(*window);
+        moveMouse(window->viewport(), p);
+        QTest::mousePress(window->viewport(), Qt::LeftButton, {}, p);
+        for (int k = 0; k < 60; ++k) window->simulation()->stepOnce();
+        QTest::mouseRelease(window->viewport(), Qt::LeftButton, {}, p);
+        QVERIFY(waitForCount(recorded, 1));
+        settledStatus(*window);
+        QVERIFY(window->isModified());
+        QueuedSignalSpy undone(window->simulation(), &SimulationThread::strokeUndone);
+        window->undoStack()->undo();
+        QVERIFY(waitForCount(undone, 1));
+        settledStatus(*window);
+        QTRY_VERIFY(!window->isModified());
+    }
+
+    void aBadImageSizeIsRefusedBeforeAskingForAFile() {
+        int asked = 0;
+        window->chooseFile = [&](MainWindow::FileDialog) {
+            ++asked;
+            return QString();
+        };
+        for (const QSize size : {QSize(0, 0), QSize(8, 600), QSize(9000, 100)}) {
+            lastError.clear();
+            window->chooseImageSize = [size] { return size; };
+            window->action("exportImage")->trigger();
+            QVERIFY(lastError.contains(QStringLiteral("8192")));
+        }
+        QCOMPARE(asked, 0);
+        window->chooseImageSize = [] { return QSize(); }; // cancelled: nothing said
+        lastError.clear();
+        window->action("exportImage")->trigger();
+        QVERIFY(lastError.isEmpty());
+        QCOMPARE(asked, 0);
     }
 
     void closingAModifiedSheetAsks() {

@@ -176,6 +176,10 @@
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>
@@ -375,6 +379,14 @@
     <message>
         <source>Could not save the recording: %1</source>
         <translation>Die Aufzeichnung konnte nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <source>Paused: the push acts once the simulation plays (Space or Step).</source>
+        <translation>Angehalten: Der Stoß wirkt, sobald die Simulation läuft (Leertaste oder Schritt).</translation>
+    </message>
+    <message>
+        <source>The image size is width x height, each from 16 to %1 pixels, such as 1920x1080.</source>
+        <translation>Die Bildgröße ist Breite x Höhe, jeweils 16 bis %1 Pixel, etwa 1920x1080.</translation>
     </message>
 </context>
 <context>

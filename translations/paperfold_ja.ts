@@ -175,6 +175,10 @@
         <source>&amp;Redo</source>
         <translation>やり直し(&amp;R)</translation>
     </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>一時停止(&amp;P)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>
@@ -374,6 +378,14 @@
     <message>
         <source>Could not save the recording: %1</source>
         <translation>記録を保存できませんでした: %1</translation>
+    </message>
+    <message>
+        <source>Paused: the push acts once the simulation plays (Space or Step).</source>
+        <translation>一時停止中：押し込みはシミュレーションが動くと働きます（スペースまたはステップ）。</translation>
+    </message>
+    <message>
+        <source>The image size is width x height, each from 16 to %1 pixels, such as 1920x1080.</source>
+        <translation>画像サイズは 幅 x 高さ で、それぞれ 16～%1 ピクセルです（例：1920x1080）。</translation>
     </message>
 </context>
 <context>

@@ -175,6 +175,10 @@
         <source>&amp;Redo</source>
         <translation>다시 실행(&amp;R)</translation>
     </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>일시 정지(&amp;P)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>
@@ -374,6 +378,14 @@
     <message>
         <source>Could not save the recording: %1</source>
         <translation>기록을 저장할 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <source>Paused: the push acts once the simulation plays (Space or Step).</source>
+        <translation>일시 정지됨: 누르기는 시뮬레이션이 재생되면 작동합니다 (Space 또는 단계).</translation>
+    </message>
+    <message>
+        <source>The image size is width x height, each from 16 to %1 pixels, such as 1920x1080.</source>
+        <translation>이미지 크기는 너비 x 높이이며, 각각 16~%1 픽셀입니다 (예: 1920x1080).</translation>
     </message>
 </context>
 <context>

@@ -25,7 +25,8 @@ void ActionTexts::apply(const QObject* window) {
     set("exportImage", tr("Export &Image…"));
     set("exportMesh", tr("Export &Mesh…"));
     set("quit", tr("&Quit"));
-    set("play", tr("&Play"), tr("Play or pause the simulation (Space)"));
+    set("play", action("play")->isChecked() ? tr("&Pause") : tr("&Play"),
+        tr("Play or pause the simulation (Space)"));
     set("step", tr("S&tep"), tr("Advance one step"));
     set("reset", tr("&Reset"), tr("Start the current scene again"));
     set("overlay.springs", tr("&Spring kinds"));

@@ -40,8 +40,9 @@ QSize EditorDialogs::chooseImageSize(QWidget* parent) {
     const QString text =
         QInputDialog::getText(parent, tr("Export Image"), tr("Size in pixels (width x height):"),
                               QLineEdit::Normal, QStringLiteral("1920x1080"), &ok);
+    if (!ok) return QSize();
     const QStringList wh = text.split(QLatin1Char('x'));
-    if (!ok || wh.size() != 2) return QSize();
+    if (wh.size() != 2) return QSize(0, 0); // unreadable: the window says what it expects
     return QSize(wh[0].trimmed().toInt(), wh[1].trimmed().toInt());
 }
 

@@ -21,7 +21,7 @@ class EditorDialogs {
     static QString chooseFile(QWidget* parent, FileDialog kind, const QString& current);
     static void showError(QWidget* parent, const QString& message);
     static QMessageBox::StandardButton askToSave(QWidget* parent);
-    // "width x height"; an invalid size when cancelled or unreadable.
+    // "width x height": an invalid QSize when cancelled, 0 x 0 when unreadable.
     static QSize chooseImageSize(QWidget* parent);
 };
 

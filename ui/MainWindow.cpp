@@ -7,11 +7,13 @@
 #include "EditorParameters.h"
 #include "HelpText.h"
 #include "Language.h"
+#include "OffscreenRenderer.h"
 #include "ParameterPanel.h"
 #include "RecentFiles.h"
 #include "RecordingFile.h"
 #include "Scenes.h"
 #include "SheetFile.h"
+#include "SheetStats.h"
 #include "SimulationThread.h"
 #include "SnapshotExport.h"
 #include "SolverPanel.h"
@@ -104,6 +106,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(charts_, &ChartBrowser::failed, this, [this](const QString& m) { showError(m); });
     connect(panel_, &ParameterPanel::toolRadiusChanged, input_, &ViewportInput::setToolRadius);
     connect(input_, &ViewportInput::toolRadiusChanged, panel_, &ParameterPanel::setToolRadius);
+    connect(input_, &ViewportInput::strokeBegan, this, [this] {
+        if (!playing_)
+            statusBar()->showMessage(
+                tr("Paused: the push acts once the simulation plays (Space or Step)."), 5000);
+    });
 
     retranslate();
     QSettings settings;
@@ -222,6 +229,7 @@ void MainWindow::createActions() {
         sim_->setPlaying(on);
         action("play")->setIcon(
             style()->standardIcon(on ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+        ActionTexts::apply(this); // Pause while playing, Play while paused
     });
     connect(make("step", QKeySequence(tr("Ctrl+.")), QStyle::SP_MediaSkipForward),
             &QAction::triggered, this, [this] {
@@ -362,16 +370,18 @@ void MainWindow::onSnapshot() {
         input_->fitCamera();
     }
     const SimulationStatus st = sim_->status();
-    lastStep_ = st.step;
+    lastHash_ = st.sheetHash;
     readout_->show(st);
     solver_->showStatus(st);
     updateTitle();
 }
 
-// User edits always count. Simulating further counts for a sheet that came from a
-// file (the file no longer holds it); a fresh scene that only ran is not worth a prompt.
+// A sheet from a file is modified when it differs from the file: its positions and
+// velocities, or its parameters (an undo back to the saved sheet is not a change). A
+// fresh scene that only ran is not worth a prompt; one the user edited is.
 bool MainWindow::isModified() const {
-    return !undo_->isClean() || (!file_.isEmpty() && lastStep_ != savedStep_);
+    if (file_.isEmpty()) return !undo_->isClean();
+    return lastHash_ != savedHash_ || !(params() == savedParams_);
 }
 
 void MainWindow::updateTitle() {
@@ -389,8 +399,6 @@ void MainWindow::newScene(const QString& scene) {
     sim_->replaceWorld(w);
     undo_->clear();
     file_.clear();
-    savedStep_ = 0;
-    lastStep_ = 0;
     firstSnapshot_ = true;
     updateTitle();
 }
@@ -402,7 +410,8 @@ bool MainWindow::openFile(const QString& path) {
         return false;
     }
     parameters_->set(load.world->params);
-    savedStep_ = lastStep_ = load.world->stepCount;
+    savedHash_ = lastHash_ = stateHash(load.world->sheet);
+    savedParams_ = load.world->params;
     sim_->replaceWorld(*load.world);
     scene_ = QString::fromStdString(load.world->scene);
     undo_->clear();
@@ -433,7 +442,8 @@ bool MainWindow::saveFile(const QString& path) {
         return false;
     }
     file_ = path;
-    savedStep_ = lastStep_ = world->stepCount;
+    savedHash_ = lastHash_ = stateHash(world->sheet);
+    savedParams_ = world->params;
     undo_->setClean();
     recent_->add(path);
     updateTitle();
@@ -478,7 +488,14 @@ void MainWindow::exportImage() {
     auto snap = viewport_->snapshot();
     if (!snap) return;
     const QSize size = chooseImageSize();
-    if (!size.isValid()) return;
+    if (!size.isValid()) return; // cancelled
+    const int most = OffscreenRenderer::kMaxSize;
+    if (size.width() < 16 || size.height() < 16 || size.width() > most || size.height() > most) {
+        showError(tr("The image size is width x height, each from 16 to %1 pixels, such as "
+                     "1920x1080.")
+                      .arg(most));
+        return;
+    }
     const QString path = chooseFile(FileDialog::ExportImage);
     if (path.isEmpty()) return;
     QString error;

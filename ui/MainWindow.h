@@ -109,8 +109,9 @@ class MainWindow : public QMainWindow {
 
     QString scene_ = QStringLiteral("press");
     QString file_;
-    std::int64_t savedStep_ = 0;
-    std::int64_t lastStep_ = 0;
+    // What the file holds, and the sheet's state in the newest snapshot (stateHash).
+    std::uint64_t savedHash_ = 0, lastHash_ = 0;
+    SimParams savedParams_;
     bool firstSnapshot_ = true;
     // Set when the simulation replaced its World (New, Open, Reset): the next frame
     // drawn hands the freed heap back to the system.

@@ -18,7 +18,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     layout->addLayout(grid);
     phi_ = addSliderRow(grid, 0, 0.0, 1.0, 2, 100.0);
     psi_ = addSliderRow(grid, 1, 0.0, 1.0, 2, 100.0);
-    sigma_ = addSliderRow(grid, 2, 0.0, 2.0, 2, 100.0);
+    sigma_ = addSliderRow(grid, 2, 0.0, 4.0, 2, 100.0);  // the CLI's and the file's range
     radius_ = addSliderRow(grid, 3, 1.0, 10.0, 1, 10.0); // centimetres
 
     advanced_ = new QGroupBox(this);
@@ -69,6 +69,9 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     });
     layout->addWidget(advanced_);
     layout->addStretch();
+    // Typing "0.1" commits once, on Enter or leaving the box, not at every keystroke
+    // (which reformatted the text under the cursor and made each key an undo step).
+    for (QAbstractSpinBox* box : findChildren<QAbstractSpinBox*>()) box->setKeyboardTracking(false);
 
     connect(stiffness_, &QDoubleSpinBox::valueChanged, this, [this](double k) {
         emitEdit(QStringLiteral("stiffness"), [k](SimParams& p) {

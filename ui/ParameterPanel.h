@@ -33,6 +33,7 @@ class ParameterPanel : public QWidget {
     QSlider* phiSlider() const { return phi_.slider; }
     QSlider* psiSlider() const { return psi_.slider; }
     QSlider* sigmaSlider() const { return sigma_.slider; }
+    QDoubleSpinBox* phiSpin() const { return phi_.spin; }
 
   signals:
     // A user edit of the parameter `what`. `drag` numbers a slider drag: edits with the

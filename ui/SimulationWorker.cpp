@@ -106,6 +106,7 @@ void SimulationWorker::publish(double stepSeconds) {
     st.maxStrain = stats.maxStrain;
     st.rmsStrain = stats.rmsStrain;
     st.playing = playing_;
+    st.sheetHash = stateHash(w.sheet);
     emit published(std::make_shared<const SheetSnapshot>(makeSnapshot(session_.simulation())), st);
 }
 

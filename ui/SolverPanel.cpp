@@ -62,6 +62,7 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
         if (materialPreset(name.toStdString(), m))
             emitEdit(QStringLiteral("material"), [m](SimParams& p) { p.material = m; });
     });
+    for (QSpinBox* box : {iterations_, stepsPerSecond_}) box->setKeyboardTracking(false);
     connect(iterations_, &QSpinBox::valueChanged, this, [this](int k) {
         emitEdit(QStringLiteral("iterations"), [k](SimParams& p) { p.iterations = k; });
     });

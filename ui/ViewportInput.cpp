@@ -47,8 +47,10 @@ void ViewportInput::pointTool(const QPoint& pixel, bool pressed) {
     const auto hit = pickSheet(*snap, ray);
     if (!hit) return;
     toolTarget_ = toolCenter(*hit, toolRadius_, pressed ? kPushDepth * toolRadius_ : 0.0);
+    const bool began = pressed && !toolPressed_;
     toolPressed_ = pressed;
     sim_->setTool(toolTarget_, toolRadius_, true, pressed);
+    if (began) emit strokeBegan();
 }
 
 void ViewportInput::hideTool() {

@@ -36,6 +36,7 @@ class ViewportInput : public QObject {
 
   signals:
     void toolRadiusChanged(double radius); // by Ctrl + wheel
+    void strokeBegan();                    // the left button went down over the sheet
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
