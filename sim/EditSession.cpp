@@ -5,6 +5,9 @@
 #include "Normals.h"
 #include "Scenes.h"
 
+#include <algorithm>
+#include <utility>
+
 namespace pf {
 
 EditSession::EditSession(World world) : sim_(std::move(world)) {
@@ -60,6 +63,9 @@ void EditSession::apply(const EditCommand& c) {
     case EditCommand::Kind::Diverged:
         advance(1);
         break;
+    case EditCommand::Kind::Settle:
+        settle();
+        break;
     }
 }
 
@@ -95,6 +101,7 @@ std::string replay(const EditLog& log, EditSession& session,
 }
 
 void EditSession::replaceWorld(const World& world) {
+    settle_ = Settle::None;
     const SphereTool tool = sim_.world().sphere;
     sim_ = Simulation(world);
     sim_.world().script.sphereKeys.clear();
@@ -113,6 +120,7 @@ void EditSession::setParams(const SimParams& given) {
     c.kind = EditCommand::Kind::Params;
     c.params = std::make_shared<const SimParams>(params);
     record(std::move(c));
+    settle_ = Settle::None; // an edit ends a freeze (and a settle under way)
     if (!(params.material == sim_.world().params.material))
         setMaterial(sim_.world(), params.material);
     sim_.world().params = params;
@@ -154,6 +162,7 @@ EditSession::MeshSize EditSession::meshSize() const {
 }
 
 void EditSession::beginStroke() {
+    settle_ = Settle::None;
     strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
     pressedLook_ = look();
     pressedMesh_ = meshSize();
@@ -179,6 +188,10 @@ std::optional<EditSession::StrokeEnd> EditSession::endStroke() {
     stroke.before = std::move(pressedLook_);
     stroke.after = look();
     pressedLook_ = {};
+    return keepStroke(std::move(stroke));
+}
+
+EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke) {
     strokes_.push_back(std::move(stroke));
     if (strokes_.size() > kStrokesWithLook) {
         Stroke& old = strokes_[strokes_.size() - 1 - kStrokesWithLook];
@@ -203,6 +216,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
         all = all && ok;
     }
     sim_.sheetEdited();
+    settle_ = Settle::None;
     if (all) restore(st.before);
     if (pressed_) beginStroke(); // a stroke under way goes on from what undo left
     return recovered;
@@ -236,7 +250,9 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         ++reapplied;
     }
     sim_.sheetEdited();
+    settle_ = Settle::None;
     if (reapplied == static_cast<int>(st.events.size())) restore(st.after);
+    if (st.settle && reapplied == 0 && !pressed_) freeze();
     if (pressed_) beginStroke();
     return reapplied;
 }
@@ -250,7 +266,13 @@ StepStatus EditSession::advance(int steps) {
         if (move.norm() > limit) move *= limit / move.norm();
         sphere.center += move;
         sphere.velocity = move / w.params.dt;
-        const StepStatus status = sim_.step();
+        if (settle_ == Settle::Frozen) {
+            // Kept as it is: the clock runs (commands stay stamped in order), nothing moves.
+            ++w.stepCount;
+            w.time += w.params.dt;
+            continue;
+        }
+        const StepStatus status = settle_ == Settle::Settling ? settleStep() : sim_.step();
         if (status != StepStatus::Ok) {
             record({EditCommand::Kind::Diverged, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr});
             return status;
@@ -265,6 +287,50 @@ bool EditSession::placeToolAtTarget() {
     record({EditCommand::Kind::PlaceTool, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr});
     sphere.center = toolTarget_;
     return true;
+}
+
+void EditSession::settle() {
+    record({EditCommand::Kind::Settle, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr});
+    if (settle_ != Settle::None) return;
+    settle_ = Settle::Settling;
+    settleStart_ = sim_.world().stepCount;
+    settleLook_ = look();
+}
+
+StepStatus EditSession::settleStep() {
+    SimParams& p = sim_.world().params;
+    const bool breaking = p.breaking, hinges = p.hinges;
+    p.breaking = p.hinges = false;
+    const StepStatus status = sim_.step();
+    p.breaking = breaking;
+    p.hinges = hinges;
+    if (status != StepStatus::Ok) return status;
+    const World& w = sim_.world();
+    double fastest = 0.0;
+    for (const Vec3& v : w.sheet.verts.v) fastest = std::max(fastest, v.squaredNorm());
+    const bool resting = fastest < kRestSpeed * kRestSpeed;
+    if (resting || double(w.stepCount - settleStart_) * w.params.dt >= kSettleSeconds) {
+        Stroke stroke;
+        stroke.firstEvent = static_cast<Index>(w.sheet.events.size());
+        stroke.pressedOn = meshSize();
+        stroke.before = std::move(settleLook_);
+        settleLook_ = {};
+        freeze();
+        stroke.after = look();
+        stroke.settle = true;
+        settled_ = keepStroke(std::move(stroke));
+    }
+    return status;
+}
+
+void EditSession::freeze() {
+    for (Vec3& v : sim_.world().sheet.verts.v) v.setZero();
+    sim_.restartIntegrator();
+    settle_ = Settle::Frozen;
+}
+
+std::optional<EditSession::StrokeEnd> EditSession::takeSettled() {
+    return std::exchange(settled_, std::nullopt);
 }
 
 } // namespace pf

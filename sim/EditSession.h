@@ -20,7 +20,8 @@ struct EditCommand {
         Undo = 3,
         Redo = 4,
         Params = 5,
-        Diverged = 6
+        Diverged = 6,
+        Settle = 7
     };
     Kind kind = Kind::Tool;
     std::int64_t step = 0;
@@ -98,6 +99,20 @@ class EditSession {
     // moved.
     bool placeToolAtTarget();
 
+    // The artist's "keep it like this". The sheet steps on without breaking or hinging
+    // until it comes to rest (every vertex slower than kRestSpeed) or kSettleSeconds have
+    // passed; then it stands frozen — the clock runs, nothing moves — until the next
+    // edit (a press of the tool, undo, redo, new parameters, a new sheet). Once frozen
+    // it is an undo step like a stroke (takeSettled): undo gives back the sheet as it was
+    // when Settle was chosen, redo the settled sheet, frozen again.
+    void settle();
+    static constexpr double kRestSpeed = 1e-3;    // m/s
+    static constexpr double kSettleSeconds = 3.0; // s
+    // The undo step of a settle that froze the sheet since the last call, once.
+    std::optional<StrokeEnd> takeSettled();
+    bool settling() const { return settle_ == Settle::Settling; }
+    bool frozen() const { return settle_ == Settle::Frozen; }
+
     // The session since it began or since the last replaceWorld, up to now.
     EditLog log() const;
 
@@ -128,11 +143,14 @@ class EditSession {
         MeshSize pressedOn;   // redo only onto the mesh the stroke began on
         std::vector<StrokeEvent> events;
         SheetLook before, after;
+        bool settle = false; // a Settle: redo freezes the sheet again
     };
     SheetLook look() const;
     // Gives back `look` if the sheet has the same vertices again; false otherwise.
     bool restore(const SheetLook& look);
     std::optional<StrokeEnd> endStroke();
+    // Adds an undo step; the oldest steps beyond kStrokesWithLook drop their looks.
+    StrokeEnd keepStroke(Stroke stroke);
     void beginLog();
     void record(EditCommand command);
 
@@ -144,6 +162,14 @@ class EditSession {
     SheetLook pressedLook_; // the sheet when the current stroke began
     MeshSize pressedMesh_;
     void beginStroke();
+    // One step of a settle under way: no damage; freezes the sheet once it rests.
+    StepStatus settleStep();
+    void freeze();
+    enum class Settle { None, Settling, Frozen };
+    Settle settle_ = Settle::None;
+    std::int64_t settleStart_ = 0;
+    SheetLook settleLook_; // the sheet when Settle was chosen
+    std::optional<StrokeEnd> settled_;
     EditLog log_; // endStep is filled in by log()
 };
 

@@ -303,6 +303,80 @@ class TestEditSession : public QObject {
         QCOMPARE(undone.breakProbability, fresh());
     }
 
+    // Settle: a crumpled, moving sheet steps on without damage until it rests (or 3 s
+    // pass), then stands exactly still until the next edit; undo and redo like a stroke.
+    void settleStopsDamageAndKeepsTheSheetAsItIs() {
+        EditSession session(*makeScene("press"));
+        pushStroke(session, 0.0, 0.6);
+        session.advance(6);
+        const Index events = session.world().sheet.events.size();
+        const std::vector<Vec3> chosenAt = session.world().sheet.verts.x;
+        session.settle();
+        QVERIFY(session.settling());
+        std::optional<EditSession::StrokeEnd> settled;
+        int steps = 0;
+        for (; !settled && steps < 2000; ++steps) {
+            QCOMPARE(session.advance(1), StepStatus::Ok);
+            settled = session.takeSettled();
+        }
+        QVERIFY(settled);
+        qInfo("settled after %d steps (%.2f s)", steps, steps * session.world().params.dt);
+        QVERIFY(steps <= std::lround(EditSession::kSettleSeconds / session.world().params.dt));
+        QVERIFY(session.frozen());
+        QCOMPARE(session.world().sheet.events.size(), events); // no break, no hinge
+        QVERIFY(!session.takeSettled());                       // reported once
+
+        // Frozen: a minute of steps moves nothing; the clock runs.
+        const std::vector<Vec3> kept = session.world().sheet.verts.x;
+        const std::int64_t step = session.world().stepCount;
+        session.advance(240 * 60);
+        QCOMPARE(session.world().sheet.verts.x, kept);
+        QCOMPARE(session.world().stepCount, step + 240 * 60);
+
+        // Undo gives back the sheet as it was when Settle was chosen, moving again.
+        QCOMPARE(session.undoStroke(settled->stroke), std::optional<int>(0));
+        QVERIFY(!session.frozen());
+        QCOMPARE(session.world().sheet.verts.x, chosenAt);
+        session.advance(10);
+        QVERIFY(session.world().sheet.verts.x != chosenAt);
+        // Redo: the settled sheet, frozen again.
+        QCOMPARE(session.redoStroke(settled->stroke), std::optional<int>(0));
+        QVERIFY(session.frozen());
+        QCOMPARE(session.world().sheet.verts.x, kept);
+        session.advance(100);
+        QCOMPARE(session.world().sheet.verts.x, kept);
+
+        // The next edit ends the freeze: a press of the tool pushes again.
+        pushStroke(session, 0.0, 0.3);
+        QVERIFY(!session.frozen());
+        QVERIFY(session.world().sheet.verts.x != kept);
+    }
+
+    void aSessionWithASettleReplays() {
+        EditSession session(*makeScene("press"));
+        pushStroke(session, 0.0, 0.5);
+        session.settle();
+        session.advance(900);
+        pushStroke(session, 0.5, 0.8);
+        session.settle();
+        session.advance(100);
+        session.undoStroke(0);
+        session.advance(30);
+        EditSession replayed(session.log());
+        QCOMPARE(QString::fromStdString(replay(session.log(), replayed)), QString());
+        QCOMPARE(encodeWorld(replayed.world()), encodeWorld(session.world()));
+        // And through the file.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("settle.paperrec"));
+        QString error;
+        QVERIFY2(saveRecording(session.log(), path, &error), qPrintable(error));
+        const RecordingLoad load = loadRecording(path);
+        QVERIFY2(load.log, qPrintable(load.error));
+        EditSession fromFile(*load.log);
+        QCOMPARE(QString::fromStdString(replay(*load.log, fromFile)), QString());
+        QCOMPARE(stateHash(fromFile.world().sheet), stateHash(session.world().sheet));
+    }
+
     void aNewSheetForgetsTheStrokesButKeepsTheTool() {
         EditSession session(*makeScene("press"));
         QVERIFY(pushStroke(session, 0.0, 0.5).has_value());

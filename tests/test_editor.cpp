@@ -490,6 +490,33 @@ class TestEditor : public QObject {
         QCOMPARE(asked, 0);
     }
 
+    // Simulation > Settle: the sheet comes to rest without new breaks, then stays exactly
+    // as it is; it is one undo step, which gives the moving sheet back.
+    void settleKeepsTheSheetAndIsOneUndoStep() {
+        window->newScene(QStringLiteral("drop")); // a tilted sheet in the air: it moves
+        QueuedSignalSpy settled(window->simulation(), &SimulationThread::settled);
+        const int before = settledStatus(*window).breaks;
+        const auto chosenAt = worldOf(*window);
+        window->action("settle")->trigger();
+        const int steps = int(std::lround(EditSession::kSettleSeconds * 240)) + 10;
+        for (int k = 0; k < steps; ++k) window->simulation()->stepOnce();
+        QVERIFY(waitForCount(settled, 1));
+        QTRY_COMPARE(window->undoStack()->count(), 1);
+        QCOMPARE(window->undoStack()->undoText(), QStringLiteral("Settle"));
+        QCOMPARE(settledStatus(*window).breaks, before);
+        const auto kept = worldOf(*window);
+        for (int k = 0; k < 120; ++k) window->simulation()->stepOnce();
+        window->simulation()->sync();
+        QCOMPARE(worldOf(*window)->sheet.verts.x, kept->sheet.verts.x);
+        QVERIFY(window->statusBar()->currentMessage().contains(QStringLiteral("Settled")));
+        window->undoStack()->undo();
+        window->simulation()->sync();
+        QCOMPARE(worldOf(*window)->sheet.verts.x, chosenAt->sheet.verts.x);
+        window->undoStack()->redo();
+        window->simulation()->sync();
+        QCOMPARE(worldOf(*window)->sheet.verts.x, kept->sheet.verts.x);
+    }
+
     void closingAModifiedSheetAsks() {
         int asked = 0;
         window->askToSave = [&] {

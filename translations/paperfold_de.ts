@@ -45,6 +45,10 @@
         <source>Change %1</source>
         <translation>%1 ändern</translation>
     </message>
+    <message>
+        <source>Settle</source>
+        <translation>Beruhigen</translation>
+    </message>
 </context>
 <context>
     <name>pf::ActionTexts</name>
@@ -179,6 +183,14 @@
     <message>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <source>Sett&amp;le</source>
+        <translation>Zur R&amp;uhe kommen lassen</translation>
+    </message>
+    <message>
+        <source>Let the sheet come to rest without new breaks and keep it so until the next edit (Ctrl+K)</source>
+        <translation>Das Blatt ohne neue Brüche zur Ruhe kommen lassen und bis zur nächsten Bearbeitung so halten (Strg+K)</translation>
     </message>
 </context>
 <context>
@@ -387,6 +399,22 @@
     <message>
         <source>The image size is width x height, each from 16 to %1 pixels, such as 1920x1080.</source>
         <translation>Die Bildgröße ist Breite x Höhe, jeweils 16 bis %1 Pixel, etwa 1920x1080.</translation>
+    </message>
+    <message>
+        <source>Settled: the sheet stays as it is until the next edit.</source>
+        <translation>Beruhigt: Das Blatt bleibt bis zur nächsten Bearbeitung, wie es ist.</translation>
+    </message>
+    <message>
+        <source>Ctrl+K</source>
+        <translation>Ctrl+K</translation>
+    </message>
+    <message>
+        <source>Settling: the sheet comes to rest…</source>
+        <translation>Beruhigen: Das Blatt kommt zur Ruhe…</translation>
+    </message>
+    <message>
+        <source>Settling once the simulation plays (Space).</source>
+        <translation>Beruhigt wird, sobald die Simulation läuft (Leertaste).</translation>
     </message>
 </context>
 <context>

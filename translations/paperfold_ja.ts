@@ -44,6 +44,10 @@
         <source>Change %1</source>
         <translation>%1 を変更</translation>
     </message>
+    <message>
+        <source>Settle</source>
+        <translation>静止</translation>
+    </message>
 </context>
 <context>
     <name>pf::ActionTexts</name>
@@ -178,6 +182,14 @@
     <message>
         <source>&amp;Pause</source>
         <translation>一時停止(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Sett&amp;le</source>
+        <translation>静止させる(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Let the sheet come to rest without new breaks and keep it so until the next edit (Ctrl+K)</source>
+        <translation>新たな破断なしにシートを静止させ、次の編集までそのまま保ちます (Ctrl+K)</translation>
     </message>
 </context>
 <context>
@@ -386,6 +398,22 @@
     <message>
         <source>The image size is width x height, each from 16 to %1 pixels, such as 1920x1080.</source>
         <translation>画像サイズは 幅 x 高さ で、それぞれ 16～%1 ピクセルです（例：1920x1080）。</translation>
+    </message>
+    <message>
+        <source>Settled: the sheet stays as it is until the next edit.</source>
+        <translation>静止しました：次の編集までシートはこのままです。</translation>
+    </message>
+    <message>
+        <source>Ctrl+K</source>
+        <translation>Ctrl+K</translation>
+    </message>
+    <message>
+        <source>Settling: the sheet comes to rest…</source>
+        <translation>静止中：シートが落ち着くのを待っています…</translation>
+    </message>
+    <message>
+        <source>Settling once the simulation plays (Space).</source>
+        <translation>シミュレーションが動くと静止させます（スペース）。</translation>
     </message>
 </context>
 <context>

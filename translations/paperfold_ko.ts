@@ -44,6 +44,10 @@
         <source>Change %1</source>
         <translation>%1 변경</translation>
     </message>
+    <message>
+        <source>Settle</source>
+        <translation>안정</translation>
+    </message>
 </context>
 <context>
     <name>pf::ActionTexts</name>
@@ -178,6 +182,14 @@
     <message>
         <source>&amp;Pause</source>
         <translation>일시 정지(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Sett&amp;le</source>
+        <translation>안정시키기(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Let the sheet come to rest without new breaks and keep it so until the next edit (Ctrl+K)</source>
+        <translation>새 파단 없이 시트를 멈추게 하고 다음 편집까지 그대로 둡니다 (Ctrl+K)</translation>
     </message>
 </context>
 <context>
@@ -386,6 +398,22 @@
     <message>
         <source>The image size is width x height, each from 16 to %1 pixels, such as 1920x1080.</source>
         <translation>이미지 크기는 너비 x 높이이며, 각각 16~%1 픽셀입니다 (예: 1920x1080).</translation>
+    </message>
+    <message>
+        <source>Settled: the sheet stays as it is until the next edit.</source>
+        <translation>안정됨: 다음 편집까지 시트가 그대로 유지됩니다.</translation>
+    </message>
+    <message>
+        <source>Ctrl+K</source>
+        <translation>Ctrl+K</translation>
+    </message>
+    <message>
+        <source>Settling: the sheet comes to rest…</source>
+        <translation>안정시키는 중: 시트가 멈추는 중…</translation>
+    </message>
+    <message>
+        <source>Settling once the simulation plays (Space).</source>
+        <translation>시뮬레이션이 재생되면 안정시킵니다 (Space).</translation>
     </message>
 </context>
 <context>

@@ -28,6 +28,9 @@ void ActionTexts::apply(const QObject* window) {
     set("play", action("play")->isChecked() ? tr("&Pause") : tr("&Play"),
         tr("Play or pause the simulation (Space)"));
     set("step", tr("S&tep"), tr("Advance one step"));
+    set("settle", tr("Sett&le"),
+        tr("Let the sheet come to rest without new breaks and keep it so until the next edit "
+           "(Ctrl+K)"));
     set("reset", tr("&Reset"), tr("Start the current scene again"));
     set("overlay.springs", tr("&Spring kinds"));
     set("overlay.probability", tr("&Break probability"));

@@ -94,6 +94,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(sim_.get(), &SimulationThread::strokeRecorded, this, [this](int stroke, int events) {
         undo_->push(new PushStrokeCommand(sim_.get(), stroke, events));
     });
+    connect(sim_.get(), &SimulationThread::settled, this, [this](int stroke) {
+        undo_->push(PushStrokeCommand::settle(sim_.get(), stroke));
+        statusBar()->showMessage(tr("Settled: the sheet stays as it is until the next edit."),
+                                 5000);
+    });
     connect(sim_.get(), &SimulationThread::diverged, this, [this](qint64 step) {
         playing_ = false;
         showError(
@@ -236,6 +241,11 @@ void MainWindow::createActions() {
                 action("play")->setChecked(false);
                 sim_->stepOnce();
             });
+    connect(make("settle", QKeySequence(tr("Ctrl+K"))), &QAction::triggered, this, [this] {
+        sim_->settle();
+        statusBar()->showMessage(playing_ ? tr("Settling: the sheet comes to rest…")
+                                          : tr("Settling once the simulation plays (Space)."));
+    });
     connect(make("reset", QKeySequence(tr("Ctrl+R")), QStyle::SP_BrowserReload),
             &QAction::triggered, this, [this] {
                 if (maybeSave()) newScene(scene_);
@@ -296,7 +306,7 @@ void MainWindow::createMenus() {
     languageMenu_->addActions(languageGroup_->actions());
 
     simMenu_ = menuBar()->addMenu(QString());
-    for (const char* name : {"play", "step", "reset"}) simMenu_->addAction(action(name));
+    for (const char* name : {"play", "step", "settle", "reset"}) simMenu_->addAction(action(name));
 
     helpMenu_ = menuBar()->addMenu(QString());
     helpMenu_->addAction(action("help"));

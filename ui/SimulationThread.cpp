@@ -48,6 +48,8 @@ void SimulationThread::forwardWorkerSignals() {
     direct(&SimulationWorker::strokeRedone, [this](int stroke, int n) {
         emitOnGuiThread([this, stroke, n] { emit strokeRedone(stroke, n); });
     });
+    direct(&SimulationWorker::settled,
+           [this](int stroke) { emitOnGuiThread([this, stroke] { emit settled(stroke); }); });
     direct(&SimulationWorker::worldReplaced,
            [this] { emitOnGuiThread([this] { emit worldReplaced(); }); });
     direct(&SimulationWorker::diverged,
@@ -115,6 +117,9 @@ void SimulationThread::undoStroke(int stroke) {
 }
 void SimulationThread::redoStroke(int stroke) {
     PF_POST(redoStroke(stroke));
+}
+void SimulationThread::settle() {
+    PF_POST(settle());
 }
 
 #undef PF_POST

@@ -42,6 +42,9 @@ class SimulationThread : public QObject {
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
     void undoStroke(int stroke);
     void redoStroke(int stroke);
+    // Lets the sheet come to rest without damage and keeps it so until the next edit
+    // (EditSession::settle); answered by settled() once it is frozen.
+    void settle();
     // A copy of the whole World, and the session since the last New or Open as a
     // recording. They wait for the simulation thread to finish its frame (a save is
     // worth that), without a nested event loop: nothing else runs meanwhile.
@@ -57,6 +60,7 @@ class SimulationThread : public QObject {
     void strokeRecorded(int stroke, int events);
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
+    void settled(int stroke);
     // A replaceWorld was applied: the old World is gone and a snapshot of the new one
     // was published (its snapshotReady comes first).
     void worldReplaced();

@@ -74,8 +74,14 @@ void SimulationWorker::redoStroke(int stroke) {
     publish(0.0);
 }
 
+void SimulationWorker::settle() {
+    session_.settle();
+}
+
 void SimulationWorker::advance(int steps) {
-    if (session_.advance(steps) == StepStatus::Ok) return;
+    const StepStatus status = session_.advance(steps);
+    if (const auto settled = session_.takeSettled()) emit this->settled(settled->stroke);
+    if (status == StepStatus::Ok) return;
     playing_ = false;
     emit diverged(session_.world().stepCount);
 }

@@ -32,6 +32,7 @@ class SimulationWorker : public QObject {
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
     void undoStroke(int stroke);
     void redoStroke(int stroke);
+    void settle();
     const EditSession& session() const { return session_; }
 
     // Applies every command the GUI queued.
@@ -43,6 +44,7 @@ class SimulationWorker : public QObject {
     void strokeRecorded(int stroke, int events);
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
+    void settled(int stroke); // a Settle froze the sheet: an undo step
     void worldReplaced();
     void diverged(qint64 step);
 

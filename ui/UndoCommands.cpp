@@ -12,6 +12,12 @@ PushStrokeCommand::PushStrokeCommand(SimulationThread* sim, int stroke, int even
                                         events));
 }
 
+PushStrokeCommand* PushStrokeCommand::settle(SimulationThread* sim, int stroke) {
+    auto* c = new PushStrokeCommand(sim, stroke, 0);
+    c->setText(QCoreApplication::translate("UndoCommands", "Settle"));
+    return c;
+}
+
 void PushStrokeCommand::undo() {
     sim_->undoStroke(stroke_);
 }

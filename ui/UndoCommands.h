@@ -9,12 +9,15 @@ namespace pf {
 
 class SimulationThread;
 
-// One push stroke. It has already happened when pushed, so the first redo does
-// nothing; undo recovers the stroke's broken edges in reverse order (§4.2) and
-// redo breaks the same edges again.
+// One push stroke, or a Settle (an undo step of the same kind in EditSession). It has
+// already happened when pushed, so the first redo does nothing; undo recovers the
+// stroke's broken edges in reverse order (§4.2) and gives back the sheet from before
+// it, and redo breaks the same edges again.
 class PushStrokeCommand : public QUndoCommand {
   public:
     PushStrokeCommand(SimulationThread* sim, int stroke, int events);
+    // A Settle: nothing broken, the sheet kept as it came to rest.
+    static PushStrokeCommand* settle(SimulationThread* sim, int stroke);
     void undo() override;
     void redo() override;
 
