@@ -276,6 +276,7 @@ int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t s
         const double p = breakProbabilityPerStep(P, params.dt, params.breakReferenceStep);
         if (!(rng.uniform() < p)) continue;
         const Index ev = breakEdge(sheet, s, normals, params.psi, step);
+        scratch.probability[s] = 0.0f; // a crease now: it cannot break again
         for (Index t : sheet.events[ev].tris) {
             if (t >= static_cast<Index>(scratch.touched.size())) scratch.touched.resize(t + 1, 0);
             scratch.touched[t] = 1;

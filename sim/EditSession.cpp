@@ -101,7 +101,8 @@ std::string replay(const EditLog& log, EditSession& session,
 }
 
 void EditSession::replaceWorld(const World& world) {
-    settle_ = Settle::None;
+    setSettle(Settle::None);
+    settled_.reset(); // an undo step of the old sheet's
     const SphereTool tool = sim_.world().sphere;
     sim_ = Simulation(world);
     sim_.world().script.sphereKeys.clear();
@@ -120,7 +121,7 @@ void EditSession::setParams(const SimParams& given) {
     c.kind = EditCommand::Kind::Params;
     c.params = std::make_shared<const SimParams>(params);
     record(std::move(c));
-    settle_ = Settle::None; // an edit ends a freeze (and a settle under way)
+    setSettle(Settle::None); // an edit ends a freeze (and a settle under way)
     if (!(params.material == sim_.world().params.material))
         setMaterial(sim_.world(), params.material);
     sim_.world().params = params;
@@ -162,7 +163,8 @@ EditSession::MeshSize EditSession::meshSize() const {
 }
 
 void EditSession::beginStroke() {
-    settle_ = Settle::None;
+    pressedFrozen_ = settle_ == Settle::Frozen;
+    setSettle(Settle::None);
     strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
     pressedLook_ = look();
     pressedMesh_ = meshSize();
@@ -173,6 +175,7 @@ std::optional<EditSession::StrokeEnd> EditSession::endStroke() {
     Stroke stroke;
     stroke.firstEvent = strokeStart_;
     stroke.pressedOn = pressedMesh_;
+    stroke.frozenBefore = pressedFrozen_;
     for (Index e = strokeStart_; e < static_cast<Index>(s.events.size()); ++e) {
         const DamageEvent& ev = s.events[e];
         if (!ev.active) continue;
@@ -216,8 +219,9 @@ std::optional<int> EditSession::undoStroke(int stroke) {
         all = all && ok;
     }
     sim_.sheetEdited();
-    settle_ = Settle::None;
-    if (all) restore(st.before);
+    setSettle(Settle::None);
+    // A stroke that began on a settled sheet gives it back settled.
+    if (all && restore(st.before) && st.frozenBefore && !pressed_) freeze();
     if (pressed_) beginStroke(); // a stroke under way goes on from what undo left
     return recovered;
 }
@@ -250,9 +254,9 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         ++reapplied;
     }
     sim_.sheetEdited();
-    settle_ = Settle::None;
-    if (reapplied == static_cast<int>(st.events.size())) restore(st.after);
-    if (st.settle && reapplied == 0 && !pressed_) freeze();
+    setSettle(Settle::None);
+    const bool restored = reapplied == static_cast<int>(st.events.size()) && restore(st.after);
+    if (st.settle && restored && !pressed_) freeze();
     if (pressed_) beginStroke();
     return reapplied;
 }
@@ -291,19 +295,20 @@ bool EditSession::placeToolAtTarget() {
 
 void EditSession::settle() {
     record({EditCommand::Kind::Settle, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr});
-    if (settle_ != Settle::None) return;
-    settle_ = Settle::Settling;
+    // Not under a held tool: the stroke would go on through paper that cannot break.
+    if (settle_ != Settle::None || pressed_) return;
+    setSettle(Settle::Settling);
     settleStart_ = sim_.world().stepCount;
     settleLook_ = look();
 }
 
+void EditSession::setSettle(Settle settle) {
+    settle_ = settle;
+    sim_.allowDamage(settle == Settle::None);
+}
+
 StepStatus EditSession::settleStep() {
-    SimParams& p = sim_.world().params;
-    const bool breaking = p.breaking, hinges = p.hinges;
-    p.breaking = p.hinges = false;
     const StepStatus status = sim_.step();
-    p.breaking = breaking;
-    p.hinges = hinges;
     if (status != StepStatus::Ok) return status;
     const World& w = sim_.world();
     double fastest = 0.0;
@@ -326,7 +331,7 @@ StepStatus EditSession::settleStep() {
 void EditSession::freeze() {
     for (Vec3& v : sim_.world().sheet.verts.v) v.setZero();
     sim_.restartIntegrator();
-    settle_ = Settle::Frozen;
+    setSettle(Settle::Frozen);
 }
 
 std::optional<EditSession::StrokeEnd> EditSession::takeSettled() {

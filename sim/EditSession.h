@@ -143,7 +143,8 @@ class EditSession {
         MeshSize pressedOn;   // redo only onto the mesh the stroke began on
         std::vector<StrokeEvent> events;
         SheetLook before, after;
-        bool settle = false; // a Settle: redo freezes the sheet again
+        bool settle = false;       // a Settle: redo freezes the sheet again
+        bool frozenBefore = false; // began on a settled sheet: undo freezes it again
     };
     SheetLook look() const;
     // Gives back `look` if the sheet has the same vertices again; false otherwise.
@@ -166,7 +167,10 @@ class EditSession {
     StepStatus settleStep();
     void freeze();
     enum class Settle { None, Settling, Frozen };
+    // Damage is allowed only while neither settling nor frozen.
+    void setSettle(Settle settle);
     Settle settle_ = Settle::None;
+    bool pressedFrozen_ = false; // the sheet was settled when the current stroke began
     std::int64_t settleStart_ = 0;
     SheetLook settleLook_; // the sheet when Settle was chosen
     std::optional<StrokeEnd> settled_;

@@ -105,7 +105,7 @@ StepStatus Simulation::step() {
 
     // A sheet at rest is not being loaded, so it does not break: Eq. 10 would otherwise
     // keep drawing on edges left compressed where the sheet came to rest.
-    if (!integrator_->asleep()) {
+    if (damageAllowed_ && !integrator_->asleep()) {
         const Index before = sheet.verts.size();
         if (p.breaking) lastBreaks_ = runBreakPass(sheet, p, w.rng, w.stepCount, breakScratch_);
         // Without breaking the next breakProbabilities gives zeros, at the cost of a fill.
@@ -128,7 +128,9 @@ StepStatus Simulation::step() {
 const std::vector<float>& Simulation::breakProbabilities() const {
     if (!probabilitiesCurrent_ ||
         breakScratch_.probability.size() != static_cast<std::size_t>(world_.sheet.springs.size())) {
-        computeBreakProbabilities(world_.sheet, world_.params, breakScratch_);
+        SimParams p = world_.params;
+        p.breaking = p.breaking && damageAllowed_;
+        computeBreakProbabilities(world_.sheet, p, breakScratch_);
         probabilitiesCurrent_ = true;
     }
     return breakScratch_.probability;

@@ -40,11 +40,17 @@ class Simulation {
         sheetEdited();
     }
 
-    // Eq. 10 per spring (zero where a spring cannot break), as the last step's break pass
-    // drew it; worked out afresh, once, after the sheet or φ changed outside a step.
+    // Eq. 10 per spring (zero where a spring cannot break, and for one that broke), as the
+    // last step's break pass drew it; worked out afresh, once, after the sheet or φ
+    // changed outside a step. All zero while damage is not allowed.
     const std::vector<float>& breakProbabilities() const;
     // The sheet or its parameters were changed between steps (undo, redo, new φ).
     void sheetEdited() { probabilitiesCurrent_ = false; }
+    // Off: steps neither break nor hinge, whatever the parameters say (a settle).
+    void allowDamage(bool allowed) {
+        damageAllowed_ = allowed;
+        sheetEdited();
+    }
 
     World& world() { return world_; }
     const World& world() const { return world_; }
@@ -65,6 +71,7 @@ class Simulation {
     int lastBreaks_ = 0;
     int lastHinges_ = 0;
     mutable bool probabilitiesCurrent_ = false;
+    bool damageAllowed_ = true;
 };
 
 // Positions far beyond this distance from the origin (metres) count as a blow-up.

@@ -269,6 +269,21 @@ class TestEditSession : public QObject {
             return scratch.probability;
         };
         // A step that broke and hinged nothing left the geometry the pass saw.
+        auto creasesShowZero = [&] {
+            const std::vector<float> shown = makeSnapshot(session.simulation()).breakProbability;
+            const Springs& S = session.world().sheet.springs;
+            for (Index k = 0; k < S.size(); ++k)
+                if (S.kind[k] == SpringKind::Crease && shown[k] != 0.0f) return false;
+            return true;
+        };
+        // A spring that broke in a step is a crease after it, and cannot break again.
+        int toBreak = 0;
+        while (session.simulation().lastBreaks() == 0 && toBreak < 2000) {
+            session.advance(1);
+            ++toBreak;
+        }
+        QVERIFY(session.simulation().lastBreaks() > 0);
+        QVERIFY(creasesShowZero());
         int quiet = 0;
         while (quiet < 200) {
             session.advance(1);
@@ -346,10 +361,30 @@ class TestEditSession : public QObject {
         session.advance(100);
         QCOMPARE(session.world().sheet.verts.x, kept);
 
-        // The next edit ends the freeze: a press of the tool pushes again.
-        pushStroke(session, 0.0, 0.3);
+        // The next edit ends the freeze: a press of the tool pushes again. Its undo gives
+        // back the settled sheet, settled.
+        const auto pushed = pushStroke(session, 0.0, 0.3);
+        QVERIFY(pushed);
         QVERIFY(!session.frozen());
         QVERIFY(session.world().sheet.verts.x != kept);
+        session.undoStroke(pushed->stroke);
+        QVERIFY(session.frozen());
+        QCOMPARE(session.world().sheet.verts.x, kept);
+        session.advance(100);
+        QCOMPARE(session.world().sheet.verts.x, kept);
+    }
+
+    // Under a held tool Settle does nothing: the push would go on through paper that
+    // cannot break, and undo would mix the two.
+    void settleIsRefusedWhileTheToolIsPressed() {
+        EditSession session(*makeScene("press"));
+        const double radius = session.world().sphere.radius;
+        const Vec3 on = session.world().sheet.verts.x[0] + Vec3(0.0, radius * 0.5, 0.0);
+        session.setTool(on, radius, true, true);
+        session.settle();
+        QVERIFY(!session.settling());
+        session.advance(800);
+        QVERIFY(!session.takeSettled());
     }
 
     void aSessionWithASettleReplays() {

@@ -2,6 +2,7 @@
 
 #include <QFileDialog>
 #include <QInputDialog>
+#include <algorithm>
 
 namespace pf {
 
@@ -43,7 +44,8 @@ QSize EditorDialogs::chooseImageSize(QWidget* parent) {
     if (!ok) return QSize();
     const QStringList wh = text.split(QLatin1Char('x'));
     if (wh.size() != 2) return QSize(0, 0); // unreadable: the window says what it expects
-    return QSize(wh[0].trimmed().toInt(), wh[1].trimmed().toInt());
+    // A negative side would make an invalid QSize, which means "cancelled".
+    return QSize(std::max(0, wh[0].trimmed().toInt()), std::max(0, wh[1].trimmed().toInt()));
 }
 
 } // namespace pf

@@ -107,6 +107,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                 .arg(step));
     });
     connect(undo_, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(parameters_, &EditorParameters::changed, this, &MainWindow::updateTitle);
     connect(solver_, &SolverPanel::openChartRequested, charts_, &ChartBrowser::showLatest);
     connect(charts_, &ChartBrowser::failed, this, [this](const QString& m) { showError(m); });
     connect(panel_, &ParameterPanel::toolRadiusChanged, input_, &ViewportInput::setToolRadius);
@@ -242,6 +243,7 @@ void MainWindow::createActions() {
                 sim_->stepOnce();
             });
     connect(make("settle", QKeySequence(tr("Ctrl+K"))), &QAction::triggered, this, [this] {
+        if (input_->toolPressed()) return; // not in the middle of a push
         sim_->settle();
         statusBar()->showMessage(playing_ ? tr("Settling: the sheet comes to rest…")
                                           : tr("Settling once the simulation plays (Space)."));
@@ -406,6 +408,7 @@ void MainWindow::newScene(const QString& scene) {
     const bool breaking = w.params.breaking; // the scene's own (drape has none)
     w.params = params();
     w.params.breaking = breaking;
+    parameters_->set(w.params); // the window's parameters are the sheet's
     sim_->replaceWorld(w);
     undo_->clear();
     file_.clear();
@@ -433,10 +436,10 @@ bool MainWindow::openFile(const QString& path) {
 }
 
 void MainWindow::saveRecording(const QString& path) {
-    auto log = std::const_pointer_cast<EditLog>(sim_->copyRecording());
-    log->start.params.sigma = params().sigma; // a look: the simulation never had it
+    EditLog log = *sim_->copyRecording();
+    log.start.params.sigma = params().sigma; // a look: the simulation never had it
     QString error;
-    if (!pf::saveRecording(*log, path, &error)) {
+    if (!pf::saveRecording(log, path, &error)) {
         showError(tr("Could not save the recording: %1").arg(error));
         return;
     }
@@ -444,8 +447,14 @@ void MainWindow::saveRecording(const QString& path) {
 }
 
 bool MainWindow::saveFile(const QString& path) {
-    auto world = std::const_pointer_cast<World>(sim_->copyWorld());
-    world->params.sigma = params().sigma; // a look: the simulation never had it
+    const auto copy = sim_->copyWorld();
+    const World* world = copy.get();
+    World withSigma;
+    if (copy->params.sigma != params().sigma) {
+        withSigma = *copy; // σ is a look: the simulation never had the editor's
+        withSigma.params.sigma = params().sigma;
+        world = &withSigma;
+    }
     QString error;
     if (!saveWorld(*world, path, &error)) {
         showError(tr("Could not save the sheet: %1").arg(error));

@@ -125,6 +125,8 @@ void SimulationThread::settle() {
 #undef PF_POST
 
 void SimulationThread::callOnWorker(const std::function<void(SimulationWorker&)>& read) {
+    // From the simulation thread itself, or once it stopped, nothing would answer.
+    Q_ASSERT(QThread::currentThread() != &thread_ && thread_.isRunning());
     // A condition variable rather than a blocking queued call: its wait is one that
     // ThreadSanitizer sees, so what the worker did is ordered before what follows here.
     std::mutex m;

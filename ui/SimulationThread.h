@@ -20,7 +20,8 @@ class SimulationWorker;
 
 // The simulation on its own thread. The GUI talks to it only through these
 // methods, which queue a command that the thread applies between frames, and reads
-// the newest published snapshot. Nothing here blocks on a step. Signals arrive on
+// the newest published snapshot. Only copyWorld, copyRecording and sync wait: for the
+// frame under way and the commands queued before them. Signals arrive on
 // the GUI thread.
 class SimulationThread : public QObject {
     Q_OBJECT
@@ -51,7 +52,7 @@ class SimulationThread : public QObject {
     std::shared_ptr<const World> copyWorld();
     std::shared_ptr<const EditLog> copyRecording();
 
-    // Waits until every command queued so far has been applied (tests and shutdown only).
+    // Waits until every command queued so far has been applied (tests only).
     void sync();
 
   signals:

@@ -18,6 +18,7 @@ SimulationWorker::~SimulationWorker() {
     // Drop the GUI's wake-up here, not in ~QObject: after markWorkerGone the GUI side
     // may be destroyed, and ~QObject would read it to disconnect.
     disconnect(channel_.wake);
+    disconnect(); // and the forwarding to the GUI side, for the same reason
     channel_.markWorkerGone();
 }
 
