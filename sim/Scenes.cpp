@@ -128,7 +128,9 @@ std::optional<World> makeScene(std::string_view name, const SceneOptions& option
 }
 
 World makeEditorScene(std::string_view name, const SceneOptions& options, double toolRadius) {
-    World w = makeScene(name, options).value_or(*makeScene("press", options));
+    std::optional<World> scene = makeScene(name, options);
+    if (!scene) scene = makeScene("press", options);
+    World w = std::move(scene).value();
     w.script.sphereKeys.clear();
     w.params.gravityOutsideFilter = true;
     w.sphere.radius = toolRadius;

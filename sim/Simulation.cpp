@@ -128,9 +128,10 @@ StepStatus Simulation::step() {
 const std::vector<float>& Simulation::breakProbabilities() const {
     if (!probabilitiesCurrent_ ||
         breakScratch_.probability.size() != static_cast<std::size_t>(world_.sheet.springs.size())) {
-        SimParams p = world_.params;
-        p.breaking = p.breaking && damageAllowed_;
-        computeBreakProbabilities(world_.sheet, p, breakScratch_);
+        if (damageAllowed_)
+            computeBreakProbabilities(world_.sheet, world_.params, breakScratch_);
+        else
+            breakScratch_.probability.assign(world_.sheet.springs.size(), 0.0f);
         probabilitiesCurrent_ = true;
     }
     return breakScratch_.probability;

@@ -43,7 +43,7 @@ bool waitForCount(QueuedSignalSpy& spy, int count, int ms = 5000) {
 
 // A copy of the simulation's whole state, as the window's Save would take it.
 std::shared_ptr<const World> worldOf(MainWindow& w) {
-    return w.simulation()->copyWorld();
+    return std::make_shared<const World>(w.simulation()->copyWorld());
 }
 
 // Waits for a snapshot published after everything queued so far was applied.

@@ -436,7 +436,7 @@ bool MainWindow::openFile(const QString& path) {
 }
 
 void MainWindow::saveRecording(const QString& path) {
-    EditLog log = *sim_->copyRecording();
+    EditLog log = sim_->copyRecording();
     log.start.params.sigma = params().sigma; // a look: the simulation never had it
     QString error;
     if (!pf::saveRecording(log, path, &error)) {
@@ -447,22 +447,16 @@ void MainWindow::saveRecording(const QString& path) {
 }
 
 bool MainWindow::saveFile(const QString& path) {
-    const auto copy = sim_->copyWorld();
-    const World* world = copy.get();
-    World withSigma;
-    if (copy->params.sigma != params().sigma) {
-        withSigma = *copy; // σ is a look: the simulation never had the editor's
-        withSigma.params.sigma = params().sigma;
-        world = &withSigma;
-    }
+    World world = sim_->copyWorld();
+    world.params.sigma = params().sigma; // a look: the simulation never had it
     QString error;
-    if (!saveWorld(*world, path, &error)) {
+    if (!saveWorld(world, path, &error)) {
         showError(tr("Could not save the sheet: %1").arg(error));
         return false;
     }
     file_ = path;
-    savedHash_ = lastHash_ = stateHash(world->sheet);
-    savedParams_ = world->params;
+    savedHash_ = lastHash_ = stateHash(world.sheet);
+    savedParams_ = world.params;
     undo_->setClean();
     recent_->add(path);
     updateTitle();

@@ -32,28 +32,22 @@ SimulationThread::~SimulationThread() {
 void SimulationThread::forwardWorkerSignals() {
     // Direct: these run on the simulation thread as the worker emits, and hand the
     // emission of this object's signal to the GUI thread.
-    auto direct = [this](auto signal, auto forward) {
-        connect(worker_, signal, this, forward, Qt::DirectConnection);
+    connect(worker_, &SimulationWorker::published, this, &SimulationThread::publish,
+            Qt::DirectConnection);
+    auto forward = [this](auto workerSignal, auto ownSignal) {
+        connect(
+            worker_, workerSignal, this,
+            [this, ownSignal](auto... args) {
+                emitOnGuiThread([this, ownSignal, args...] { (this->*ownSignal)(args...); });
+            },
+            Qt::DirectConnection);
     };
-    direct(&SimulationWorker::published,
-           [this](std::shared_ptr<const SheetSnapshot> snapshot, const SimulationStatus& status) {
-               publish(std::move(snapshot), status);
-           });
-    direct(&SimulationWorker::strokeRecorded, [this](int stroke, int events) {
-        emitOnGuiThread([this, stroke, events] { emit strokeRecorded(stroke, events); });
-    });
-    direct(&SimulationWorker::strokeUndone, [this](int stroke, int n) {
-        emitOnGuiThread([this, stroke, n] { emit strokeUndone(stroke, n); });
-    });
-    direct(&SimulationWorker::strokeRedone, [this](int stroke, int n) {
-        emitOnGuiThread([this, stroke, n] { emit strokeRedone(stroke, n); });
-    });
-    direct(&SimulationWorker::settled,
-           [this](int stroke) { emitOnGuiThread([this, stroke] { emit settled(stroke); }); });
-    direct(&SimulationWorker::worldReplaced,
-           [this] { emitOnGuiThread([this] { emit worldReplaced(); }); });
-    direct(&SimulationWorker::diverged,
-           [this](qint64 step) { emitOnGuiThread([this, step] { emit diverged(step); }); });
+    forward(&SimulationWorker::strokeRecorded, &SimulationThread::strokeRecorded);
+    forward(&SimulationWorker::strokeUndone, &SimulationThread::strokeUndone);
+    forward(&SimulationWorker::strokeRedone, &SimulationThread::strokeRedone);
+    forward(&SimulationWorker::settled, &SimulationThread::settled);
+    forward(&SimulationWorker::worldReplaced, &SimulationThread::worldReplaced);
+    forward(&SimulationWorker::diverged, &SimulationThread::diverged);
 }
 
 std::shared_ptr<const SheetSnapshot> SimulationThread::latestSnapshot() const {
@@ -146,17 +140,15 @@ void SimulationThread::sync() {
     callOnWorker([](SimulationWorker&) {});
 }
 
-std::shared_ptr<const World> SimulationThread::copyWorld() {
-    std::shared_ptr<const World> copy;
-    callOnWorker(
-        [&](SimulationWorker& w) { copy = std::make_shared<const World>(w.session().world()); });
+World SimulationThread::copyWorld() {
+    World copy;
+    callOnWorker([&](SimulationWorker& w) { copy = w.session().world(); });
     return copy;
 }
 
-std::shared_ptr<const EditLog> SimulationThread::copyRecording() {
-    std::shared_ptr<const EditLog> copy;
-    callOnWorker(
-        [&](SimulationWorker& w) { copy = std::make_shared<const EditLog>(w.session().log()); });
+EditLog SimulationThread::copyRecording() {
+    EditLog copy;
+    callOnWorker([&](SimulationWorker& w) { copy = w.session().log(); });
     return copy;
 }
 

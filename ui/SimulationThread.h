@@ -49,8 +49,8 @@ class SimulationThread : public QObject {
     // A copy of the whole World, and the session since the last New or Open as a
     // recording. They wait for the simulation thread to finish its frame (a save is
     // worth that), without a nested event loop: nothing else runs meanwhile.
-    std::shared_ptr<const World> copyWorld();
-    std::shared_ptr<const EditLog> copyRecording();
+    World copyWorld();
+    EditLog copyRecording();
 
     // Waits until every command queued so far has been applied (tests only).
     void sync();

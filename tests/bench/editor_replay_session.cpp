@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     window.action("saveRecording")->trigger();
     if (!lastError.isEmpty()) return 1;
 
-    const auto editor = window.simulation()->copyWorld();
+    const auto editor = std::make_shared<const World>(window.simulation()->copyWorld());
 
     const RecordingLoad load = loadRecording(recording);
     if (!load.log) {
