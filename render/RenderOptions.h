@@ -24,6 +24,8 @@ struct RenderOptions {
     bool ground = true;
     bool sphere = true;
     bool legend = true;
+    // Markers on pinned vertices (the editor's pins; a headless render leaves them out).
+    bool pins = false;
     // Share of the facet normal in the shading: 0 smooth, 1 faceted.
     double facet = 0.35;
     // Heat-map ranges (values at the top of the legend).

@@ -6,6 +6,7 @@
 #include "Scenes.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace pf {
@@ -66,6 +67,12 @@ void EditSession::apply(const EditCommand& c) {
     case EditCommand::Kind::Settle:
         settle();
         break;
+    case EditCommand::Kind::Grab:
+        grab(c.target, c.pressed);
+        break;
+    case EditCommand::Kind::Pin:
+        pin(c.target, c.radius);
+        break;
     }
 }
 
@@ -108,6 +115,7 @@ void EditSession::replaceWorld(const World& world) {
     sim_.world().script.sphereKeys.clear();
     sim_.world().sphere.radius = tool.radius;
     sim_.world().sphere.active = tool.active;
+    grabbed_ = kNone; // a vertex of the old sheet
     strokes_.clear();
     // A stroke held across New goes on from the new sheet.
     if (pressed_) beginStroke();
@@ -136,10 +144,97 @@ std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, d
     sphere.radius = radius;
     if (visible && !sphere.active) sphere.center = target; // appears where the cursor is
     sphere.active = visible;
+    if (grabbing()) pressed = false; // one stroke at a time
     if (pressed && !pressed_) beginStroke();
     const bool released = pressed_ && !pressed;
     pressed_ = pressed;
-    return released ? endStroke() : std::nullopt;
+    return released ? endStroke(StrokeKind::Push) : std::nullopt;
+}
+
+std::optional<EditSession::StrokeEnd> EditSession::grab(const Vec3& target, bool held) {
+    record({EditCommand::Kind::Grab, 0, target, 0.0, false, held, -1, nullptr});
+    const World& w = sim_.world();
+    grabTarget_ = target;
+    if (w.groundEnabled) grabTarget_.y() = std::max(grabTarget_.y(), w.groundHeight);
+    if (held && !grabbing() && !pressed_) {
+        const auto& V = w.sheet.verts;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (Index i = 0; i < V.size(); ++i) {
+            const double d = (V.x[i] - target).squaredNorm();
+            if (!V.pinned[i] && d < nearest) {
+                nearest = d;
+                grabbed_ = i;
+            }
+        }
+        if (grabbing()) {
+            beginStroke();
+            setPins({grabbed_}, true);
+        }
+        return std::nullopt;
+    }
+    if (held || !grabbing()) return std::nullopt;
+    releaseGrab();
+    return endStroke(StrokeKind::Grab);
+}
+
+void EditSession::releaseGrab() {
+    if (!grabbing()) return;
+    Sheet& s = sim_.world().sheet;
+    if (grabbed_ < s.verts.size()) s.verts.pinned[grabbed_] = 0; // keeps its velocity: a throw
+    grabbed_ = kNone;
+}
+
+void EditSession::pullGrabbed() {
+    if (!grabbing()) return;
+    World& w = sim_.world();
+    auto& V = w.sheet.verts;
+    Vec3 move = grabTarget_ - V.x[grabbed_];
+    const double limit = kMaxToolSpeed * w.params.dt;
+    if (move.norm() > limit) move *= limit / move.norm();
+    V.v[grabbed_] = move / w.params.dt;
+}
+
+void EditSession::setPins(const std::vector<Index>& vertices, bool pinned) {
+    auto& V = sim_.world().sheet.verts;
+    for (Index i : vertices) {
+        if (i < 0 || i >= V.size()) continue;
+        V.pinned[i] = pinned ? 1 : 0;
+        if (pinned) V.v[i] = Vec3::Zero();
+    }
+    sim_.sheetEdited();
+}
+
+std::optional<EditSession::StrokeEnd> EditSession::pin(const Vec3& point, double radius) {
+    record({EditCommand::Kind::Pin, 0, point, radius, false, false, -1, nullptr});
+    if (pressed_ || grabbing()) return std::nullopt;
+    const auto& V = sim_.world().sheet.verts;
+    Index nearest = kNone;
+    double best = radius * radius;
+    for (Index i = 0; i < V.size(); ++i)
+        if (const double d = (V.x[i] - point).squaredNorm(); d <= best) {
+            best = d;
+            nearest = i;
+        }
+    if (nearest == kNone) return std::nullopt;
+    const bool to = !V.pinned[nearest];
+    std::vector<Index> changed;
+    for (Index i = 0; i < V.size(); ++i)
+        if (bool(V.pinned[i]) != to && (V.x[i] - point).squaredNorm() <= radius * radius)
+            changed.push_back(i);
+    beginStroke();
+    setPins(changed, to);
+    Stroke stroke;
+    stroke.firstEvent = strokeStart_;
+    stroke.pressedOn = pressedMesh_;
+    stroke.frozenBefore = pressedFrozen_;
+    stroke.before = std::move(pressedLook_);
+    pressedLook_ = {};
+    stroke.after = look();
+    stroke.pinnedTo = to;
+    stroke.pinChanged = std::move(changed);
+    StrokeEnd end = keepStroke(std::move(stroke), to ? StrokeKind::Pin : StrokeKind::Unpin);
+    end.events = static_cast<int>(strokes_.back().pinChanged.size());
+    return end;
 }
 
 EditSession::SheetLook EditSession::look() const {
@@ -170,7 +265,7 @@ void EditSession::beginStroke() {
     pressedMesh_ = meshSize();
 }
 
-std::optional<EditSession::StrokeEnd> EditSession::endStroke() {
+std::optional<EditSession::StrokeEnd> EditSession::endStroke(StrokeKind kind) {
     const Sheet& s = sim_.world().sheet;
     Stroke stroke;
     stroke.firstEvent = strokeStart_;
@@ -191,10 +286,10 @@ std::optional<EditSession::StrokeEnd> EditSession::endStroke() {
     stroke.before = std::move(pressedLook_);
     stroke.after = look();
     pressedLook_ = {};
-    return keepStroke(std::move(stroke));
+    return keepStroke(std::move(stroke), kind);
 }
 
-EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke) {
+EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke, StrokeKind kind) {
     strokes_.push_back(std::move(stroke));
     if (strokes_.size() > kStrokesWithLook) {
         Stroke& old = strokes_[strokes_.size() - 1 - kStrokesWithLook];
@@ -202,12 +297,13 @@ EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke) {
         old.after = {};
     }
     return StrokeEnd{static_cast<int>(strokes_.size()) - 1,
-                     static_cast<int>(strokes_.back().events.size())};
+                     static_cast<int>(strokes_.back().events.size()), kind};
 }
 
 std::optional<int> EditSession::undoStroke(int stroke) {
     record({EditCommand::Kind::Undo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr});
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
+    releaseGrab(); // its vertex may be recovered away
     const Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
     Sheet& s = sim_.world().sheet;
     int recovered = 0;
@@ -218,6 +314,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
         recovered += ok ? 1 : 0;
         all = all && ok;
     }
+    setPins(st.pinChanged, !st.pinnedTo);
     sim_.sheetEdited();
     setSettle(Settle::None);
     // A stroke that began on a settled sheet gives it back settled.
@@ -229,6 +326,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
 std::optional<int> EditSession::redoStroke(int stroke) {
     record({EditCommand::Kind::Redo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr});
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
+    releaseGrab();
     World& w = sim_.world();
     Sheet& s = w.sheet;
     Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
@@ -253,6 +351,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         }
         ++reapplied;
     }
+    setPins(st.pinChanged, st.pinnedTo);
     sim_.sheetEdited();
     setSettle(Settle::None);
     const bool restored = reapplied == static_cast<int>(st.events.size()) && restore(st.after);
@@ -270,6 +369,7 @@ StepStatus EditSession::advance(int steps) {
         if (move.norm() > limit) move *= limit / move.norm();
         sphere.center += move;
         sphere.velocity = move / w.params.dt;
+        pullGrabbed();
         if (settle_ == Settle::Frozen) {
             // Kept as it is: the clock runs (commands stay stamped in order), nothing moves.
             ++w.stepCount;
@@ -296,7 +396,7 @@ bool EditSession::placeToolAtTarget() {
 void EditSession::settle() {
     record({EditCommand::Kind::Settle, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr});
     // Not under a held tool: the stroke would go on through paper that cannot break.
-    if (settle_ != Settle::None || pressed_) return;
+    if (settle_ != Settle::None || pressed_ || grabbing()) return;
     setSettle(Settle::Settling);
     settleStart_ = sim_.world().stepCount;
     settleLook_ = look();
@@ -323,7 +423,7 @@ StepStatus EditSession::settleStep() {
         freeze();
         stroke.after = look();
         stroke.settle = true;
-        settled_ = keepStroke(std::move(stroke));
+        settled_ = keepStroke(std::move(stroke), StrokeKind::Settle);
     }
     return status;
 }

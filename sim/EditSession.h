@@ -21,14 +21,16 @@ struct EditCommand {
         Redo = 4,
         Params = 5,
         Diverged = 6,
-        Settle = 7
+        Settle = 7,
+        Grab = 8,
+        Pin = 9
     };
     Kind kind = Kind::Tool;
     std::int64_t step = 0;
-    Vec3 target = Vec3::Zero();              // Tool
-    double radius = 0.0;                     // Tool
+    Vec3 target = Vec3::Zero();              // Tool, Grab, Pin
+    double radius = 0.0;                     // Tool, Pin
     bool visible = false;                    // Tool
-    bool pressed = false;                    // Tool
+    bool pressed = false;                    // Tool, Grab (held)
     int stroke = -1;                         // Undo, Redo
     std::shared_ptr<const SimParams> params; // Params (shared: most commands are tool moves)
 };
@@ -67,9 +69,12 @@ class EditSession {
     // kept as the world has it: it is a look, which the editor holds and saves itself.
     void setParams(const SimParams& params);
 
+    // What an undo step is, for its name in the history.
+    enum class StrokeKind : std::uint8_t { Push, Grab, Pin, Unpin, Settle };
     struct StrokeEnd {
         int stroke = 0; // its index, for undoStroke / redoStroke
-        int events = 0; // breaks and hinges it made
+        int events = 0; // breaks and hinges it made; for a pin, the vertices it (un)pinned
+        StrokeKind kind = StrokeKind::Push;
     };
     // Moves the tool's target; a release ends the stroke, which is returned when it
     // changed the sheet (broke or hinged something, or moved it by more than
@@ -82,6 +87,19 @@ class EditSession {
     // Each redo logs its breaks again: past this many damage events (the sheet file's
     // limit) a redo is refused, so that undo/redo cannot grow the log without bound.
     static constexpr std::size_t kMaxDamageEvents = 8'000'000;
+
+    // Grab: while `held`, the free vertex nearest to where the grab began follows `target`
+    // (no faster than kMaxToolSpeed, never below the ground), pinned for the solver, so
+    // the sheet hangs from it; on release it is let go with its velocity and falls. A
+    // grab is a stroke like a push. Refused while the push tool is pressed; a pinned
+    // vertex is not grabbed (the pin holds).
+    std::optional<StrokeEnd> grab(const Vec3& target, bool held);
+    bool grabbing() const { return grabbed_ != kNone; }
+    Index grabbedVertex() const { return grabbed_; }
+    // Pin: toggles the vertices within `radius` of `point` — pinned when the one nearest
+    // to it is free, freed when it is pinned. Pinned vertices stand still and are saved
+    // with the sheet. An undo step; nothing when no vertex is that close.
+    std::optional<StrokeEnd> pin(const Vec3& point, double radius);
 
     // Undo recovers (§4.2), newest first, every break and hinge since the stroke began —
     // its own and those the sheet made settling after it — and, when all came back, gives
@@ -145,19 +163,29 @@ class EditSession {
         SheetLook before, after;
         bool settle = false;       // a Settle: redo freezes the sheet again
         bool frozenBefore = false; // began on a settled sheet: undo freezes it again
+        // A pin: these vertices were set to `pinnedTo` (undo sets them back).
+        std::vector<Index> pinChanged;
+        bool pinnedTo = false;
     };
     SheetLook look() const;
     // Gives back `look` if the sheet has the same vertices again; false otherwise.
     bool restore(const SheetLook& look);
-    std::optional<StrokeEnd> endStroke();
+    std::optional<StrokeEnd> endStroke(StrokeKind kind);
+    // Lets a grabbed vertex go; no undo step.
+    void releaseGrab();
+    void setPins(const std::vector<Index>& vertices, bool pinned);
+    // Moves a grabbed vertex toward the grab's target for the coming step.
+    void pullGrabbed();
     // Adds an undo step; the oldest steps beyond kStrokesWithLook drop their looks.
-    StrokeEnd keepStroke(Stroke stroke);
+    StrokeEnd keepStroke(Stroke stroke, StrokeKind kind);
     void beginLog();
     void record(EditCommand command);
 
     Simulation sim_;
     Vec3 toolTarget_ = Vec3::Zero();
     bool pressed_ = false;
+    Index grabbed_ = kNone;
+    Vec3 grabTarget_ = Vec3::Zero();
     Index strokeStart_ = 0;
     std::vector<Stroke> strokes_;
     SheetLook pressedLook_; // the sheet when the current stroke began

@@ -158,7 +158,7 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
         lastStep = c.step;
         const auto kind = take<std::uint8_t>(p + 8);
         const auto flags = take<std::uint8_t>(p + 9);
-        if (kind < 1 || kind > 7) return bad(where + QStringLiteral(": unknown command"));
+        if (kind < 1 || kind > 9) return bad(where + QStringLiteral(": unknown command"));
         if (flags > 3 || take<std::uint16_t>(p + 10) != 0)
             return bad(where + QStringLiteral(": unknown flags"));
         c.kind = static_cast<EditCommand::Kind>(kind);

@@ -23,7 +23,9 @@ void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, Sp
     }
     for (const PinGroup& g : script.pins) {
         const Vec3 v = t < g.until ? g.velocity : Vec3::Zero();
-        for (Index i : g.vertices) sheet.verts.v[i] = v;
+        // A vertex the user has unpinned is the forces' again.
+        for (Index i : g.vertices)
+            if (sheet.verts.pinned[i]) sheet.verts.v[i] = v;
     }
 }
 

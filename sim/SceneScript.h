@@ -26,8 +26,8 @@ struct SceneScript {
 };
 
 // Sets the sphere and the pinned vertices for the step from t to t + h: the sphere
-// moves to its scripted position at t + h with the matching velocity; pinned vertices
-// get their group's velocity (positions then advance with the integrator).
+// moves to its scripted position at t + h with the matching velocity; a group's vertices
+// that are still pinned get its velocity (positions then advance with the integrator).
 void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, SphereTool& sphere);
 
 // Position on the sphere path at time t (held constant outside the keys).

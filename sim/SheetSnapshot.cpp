@@ -20,6 +20,8 @@ SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds) {
     snap.strain.resize(static_cast<std::size_t>(S.size()));
     snap.recentlyBroken.assign(static_cast<std::size_t>(S.size()), 0);
     snap.vertexStrain.assign(x.size(), 0.0f);
+    for (Index i = 0; i < s.verts.size(); ++i)
+        if (s.verts.pinned[i]) snap.pinned.push_back(i);
     for (Index k = 0; k < S.size(); ++k) {
         const Index a = S.a[k], b = S.b[k];
         snap.springEnds[k] = {a, b};

@@ -19,6 +19,7 @@ struct SheetSnapshot {
     std::vector<float> strain;                // per spring: l/l0 - 1
     std::vector<std::uint8_t> recentlyBroken; // per spring: part of a break in the last second
     std::vector<float> vertexStrain;          // per vertex: max |strain| of its structural springs
+    std::vector<Index> pinned;                // the vertices that stand still (pins, a grab)
     SphereTool sphere;
     bool groundEnabled = true;
     double groundHeight = 0.0;

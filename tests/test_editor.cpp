@@ -4,6 +4,7 @@
 #include "Language.h"
 #include "MainWindow.h"
 #include "ParameterPanel.h"
+#include "Picking.h"
 #include "QueuedSignalSpy.h"
 #include "RecordingFile.h"
 #include "SheetFile.h"
@@ -11,6 +12,7 @@
 #include "SimulationThread.h"
 #include "SolverPanel.h"
 #include "Viewport.h"
+#include "ViewportInput.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -65,6 +67,29 @@ void moveMouse(QWidget* view, const QPoint& p, Qt::MouseButtons buttons = Qt::No
     QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, buttons,
                      Qt::NoModifier);
     QApplication::sendEvent(view, &move);
+}
+
+// Saves the session through File ▸ Save Recording and replays it headless: the replay
+// must end where the editor is, bit for bit.
+void checkReplay(MainWindow& w, QString& nextFile, const QString& lastError) {
+    QTemporaryDir dir;
+    nextFile = dir.filePath(QStringLiteral("tool.paperrec"));
+    w.action("saveRecording")->trigger();
+    QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+    const auto editor = worldOf(w);
+    const RecordingLoad load = loadRecording(nextFile);
+    QVERIFY2(load.log.has_value(), qPrintable(load.error));
+    EditSession replayed(*load.log);
+    QCOMPARE(QString::fromStdString(replay(*load.log, replayed)), QString());
+    QCOMPARE(stateHash(replayed.world().sheet), stateHash(editor->sheet));
+    QVERIFY(encodeWorld(replayed.world()) == encodeWorld(*editor));
+}
+
+// The sheet point under a pixel of the viewport, as the tools pick it.
+std::optional<PickHit> pickAt(MainWindow& w, const QPoint& p) {
+    const Viewport* v = w.viewport();
+    return pickSheet(*v->snapshot(), v->camera().rayThroughPixel(p.x() + 0.5, p.y() + 0.5,
+                                                                 v->width(), v->height()));
 }
 
 } // namespace
@@ -485,6 +510,136 @@ class TestEditor : public QObject {
         window->action("exportImage")->trigger();
         QVERIFY(lastError.isEmpty());
         QCOMPARE(asked, 0);
+    }
+
+    // Tools ▸ Grab: the point under the cursor is picked up and follows the cursor at the
+    // depth it was picked at (the wheel moves it nearer); release is one undo step, which
+    // undoes and redoes and replays.
+    void grabLiftsTheVertexToTheCursorsDepth() {
+        Viewport* view = window->viewport();
+        window->action("tool.grab")->trigger();
+        QVERIFY(window->action("tool.grab")->isChecked());
+        const auto before = worldOf(*window);
+        QPoint p = viewportCentre(*window) + QPoint(40, 20);
+        const auto hit = pickAt(*window, p);
+        QVERIFY(hit && hit->onSheet);
+        const OrbitCamera cam = view->camera();
+        const Vec3 facing = (cam.target - cam.eye()).normalized();
+        const double depth = (hit->point - cam.eye()).dot(facing);
+        QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        moveMouse(view, p);
+        QTest::mousePress(view, Qt::LeftButton, {}, p);
+        for (int k = 0; k < 10; ++k) {
+            p += QPoint(0, -8);
+            moveMouse(view, p, Qt::LeftButton);
+            for (int s = 0; s < 12; ++s) window->simulation()->stepOnce();
+        }
+        for (int s = 0; s < 240; ++s) window->simulation()->stepOnce();
+        auto held = worldOf(*window);
+        Index grabbed = kNone;
+        for (Index i = 0; i < held->sheet.verts.size(); ++i)
+            if (held->sheet.verts.pinned[i]) grabbed = i;
+        QVERIFY(grabbed != kNone);
+        auto onCursor = [&](const Vec3& x, double wantDepth) {
+            const auto ray =
+                cam.rayThroughPixel(p.x() + 0.5, p.y() + 0.5, view->width(), view->height());
+            const double offRay = (x - ray.origin).cross(ray.direction).norm();
+            const double atDepth = (x - cam.eye()).dot(facing);
+            qInfo("grabbed vertex: %.2e m off the cursor's ray, depth %.4f m (want %.4f)", offRay,
+                  atDepth, wantDepth);
+            return offRay < 1e-3 && std::abs(atDepth - wantDepth) < 1e-3;
+        };
+        QVERIFY(onCursor(held->sheet.verts.x[grabbed], depth));
+        QVERIFY(held->sheet.verts.x[grabbed].y() > hit->point.y() + 0.02); // lifted
+        // One wheel notch toward the eye while held.
+        QWheelEvent wheel(QPointF(p), view->mapToGlobal(QPointF(p)), QPoint(), QPoint(0, 120),
+                          Qt::LeftButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(view, &wheel);
+        for (int s = 0; s < 120; ++s) window->simulation()->stepOnce();
+        QVERIFY(onCursor(worldOf(*window)->sheet.verts.x[grabbed],
+                         depth - ViewportInput::kGrabWheelStep));
+        QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+        QVERIFY(waitForCount(recorded, 1));
+        QTRY_COMPARE(window->undoStack()->count(), 1);
+        QVERIFY(window->undoStack()->undoText().startsWith(QStringLiteral("Grab")));
+        const auto released = worldOf(*window);
+        QVERIFY(!released->sheet.verts.pinned[grabbed]); // let go
+        window->undoStack()->undo();
+        QCOMPARE(worldOf(*window)->sheet.verts.x, before->sheet.verts.x);
+        window->undoStack()->redo();
+        QCOMPARE(worldOf(*window)->sheet.verts.x, released->sheet.verts.x);
+        for (int s = 0; s < 30; ++s) window->simulation()->stepOnce();
+        checkReplay(*window, nextFile, lastError);
+    }
+
+    // Tools ▸ Pin: a click pins the paper around the point, which then stands still
+    // while the rest falls; a second click frees it; each is an undo step; pins are
+    // saved and replay.
+    void pinHoldsThePaperAndIsSaved() {
+        window->newScene(QStringLiteral("drop")); // a tilted sheet in the air
+        window->simulation()->sync();
+        QTRY_VERIFY(window->viewport()->snapshot() &&
+                    window->viewport()->snapshot()->step == worldOf(*window)->stepCount);
+        Viewport* view = window->viewport();
+        window->action("tool.pin")->trigger();
+        QPoint p = viewportCentre(*window);
+        std::optional<PickHit> hit;
+        for (int k = 0; k < 20 && !(hit && hit->onSheet); ++k)
+            hit = pickAt(*window, p += QPoint(0, 5));
+        QVERIFY(hit && hit->onSheet);
+        QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        QTest::mouseClick(view, Qt::LeftButton, {}, p);
+        QVERIFY(waitForCount(recorded, 1));
+        QTRY_COMPARE(window->undoStack()->count(), 1);
+        QVERIFY(window->undoStack()->undoText().startsWith(QStringLiteral("Pin")));
+        const auto pinned = worldOf(*window);
+        const double radius = ViewportInput::kPinShare * ViewportInput::kDefaultToolRadius;
+        std::vector<Index> held;
+        for (Index i = 0; i < pinned->sheet.verts.size(); ++i) {
+            const bool near = (pinned->sheet.verts.x[i] - hit->point).norm() <= radius;
+            QCOMPARE(bool(pinned->sheet.verts.pinned[i]), near);
+            if (near) held.push_back(i);
+        }
+        QVERIFY(!held.empty());
+        QVERIFY(window->viewport()->renderOptions().pins);
+        for (int s = 0; s < 240; ++s) window->simulation()->stepOnce();
+        const auto later = worldOf(*window);
+        double fell = 0.0;
+        for (Index i = 0; i < later->sheet.verts.size(); ++i) {
+            if (later->sheet.verts.pinned[i])
+                QCOMPARE(later->sheet.verts.x[i], pinned->sheet.verts.x[i]);
+            else
+                fell = std::max(fell, pinned->sheet.verts.x[i].y() - later->sheet.verts.x[i].y());
+        }
+        QVERIFY2(fell > 0.05, qPrintable(QString::number(fell)));
+        // Saved with the sheet.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("pinned.paperfold"));
+        QVERIFY(window->saveFile(path));
+        const auto loaded = loadWorld(path);
+        QVERIFY2(loaded.world, qPrintable(loaded.error));
+        QCOMPARE(loaded.world->sheet.verts.pinned, later->sheet.verts.pinned);
+        // A second click on the pin frees the paper; undo pins it again, undo again frees it.
+        const QPoint onPin = p;
+        window->simulation()->sync();
+        QTRY_VERIFY(window->viewport()->snapshot()->step == later->stepCount);
+        QTest::mouseClick(view, Qt::LeftButton, {}, onPin);
+        QVERIFY(waitForCount(recorded, 2));
+        QTRY_COMPARE(window->undoStack()->count(), 2);
+        QVERIFY(window->undoStack()->undoText().startsWith(QStringLiteral("Unpin")));
+        auto pinCount = [this] {
+            const auto w = worldOf(*window);
+            return std::count(w->sheet.verts.pinned.begin(), w->sheet.verts.pinned.end(), 1);
+        };
+        QCOMPARE(pinCount(), 0);
+        window->undoStack()->undo();
+        QCOMPARE(pinCount(), std::ptrdiff_t(held.size()));
+        window->undoStack()->undo();
+        QCOMPARE(pinCount(), 0);
+        window->undoStack()->redo();
+        QCOMPARE(pinCount(), std::ptrdiff_t(held.size()));
+        for (int s = 0; s < 30; ++s) window->simulation()->stepOnce();
+        checkReplay(*window, nextFile, lastError);
     }
 
     // Simulation > Settle: the sheet comes to rest without new breaks, then stays exactly

@@ -48,6 +48,24 @@
         <source>Settle</source>
         <translation>静止</translation>
     </message>
+    <message numerus="yes">
+        <source>Grab (%n break(s) or fold(s))</source>
+        <translation>
+            <numerusform>つかむ（破断・折り目 %n 件）</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Pin %n vertex(es)</source>
+        <translation>
+            <numerusform>ピン留め（頂点 %n 個）</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Unpin %n vertex(es)</source>
+        <translation>
+            <numerusform>ピン解除（頂点 %n 個）</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>pf::ActionTexts</name>
@@ -191,6 +209,30 @@
         <source>Let the sheet come to rest without new breaks and keep it so until the next edit (Ctrl+K)</source>
         <translation>新たな破断なしにシートを静止させ、次の編集までそのまま保ちます (Ctrl+K)</translation>
     </message>
+    <message>
+        <source>&amp;Push</source>
+        <translation>押す(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Push: the left button presses the sphere into the sheet and ploughs it (P)</source>
+        <translation>押す：左ボタンで球を紙に押し込み、紙をかき分けます (P)</translation>
+    </message>
+    <message>
+        <source>&amp;Grab</source>
+        <translation>つかむ(&amp;G)</translation>
+    </message>
+    <message>
+        <source>Grab: pick up a point of the sheet and drag it; the wheel lifts or lowers it while held; release lets it fall (G)</source>
+        <translation>つかむ：紙の一点をつまんでドラッグします。押している間はホイールで上げ下げでき、離すと落ちます (G)</translation>
+    </message>
+    <message>
+        <source>P&amp;in</source>
+        <translation>ピン留め(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Pin: a click pins the paper around the point, or frees it if it is pinned; Ctrl + wheel sizes the region (I)</source>
+        <translation>ピン留め：クリックでその点の周りの紙を固定し、固定済みなら解除します。Ctrl + ホイールで範囲の大きさを変えます (I)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>
@@ -261,16 +303,16 @@
         <translation>マウスとキー</translation>
     </message>
     <message>
-        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Move the mouse&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the sphere follows the cursor over the sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;push the sphere into the paper (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;マウスを動かす&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球がカーソルに合わせて紙の上を動きます&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;左ドラッグ&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球を紙に押し込みます（1ストロークで1回の取り消し単位）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + ホイール&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球の半径&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;右ドラッグ&lt;/b&gt;、矢印キー&lt;/td&gt;&lt;td&gt;カメラを回転&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;中ドラッグ&lt;/b&gt;、Shift + 右ドラッグ&lt;/td&gt;&lt;td&gt;パン&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;ホイール&lt;/b&gt;、+ と −&lt;/td&gt;&lt;td&gt;ズーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;、&lt;b&gt;2&lt;/b&gt;、&lt;b&gt;3&lt;/b&gt;、&lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;上面・正面・等角ビュー、シートに合わせる&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;、&lt;b&gt;Ctrl+.&lt;/b&gt;、&lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;再生/一時停止、1ステップ、リセット&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;オーバーレイ：ばねの種類、破断確率、ひずみ、最近の破断、ワイヤーフレーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;、&lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;元に戻す、やり直し&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
-    </message>
-    <message>
         <source>About PaperFold</source>
         <translation>PaperFold について</translation>
     </message>
     <message>
         <source>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Crumple and fold virtual paper in real time, after Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;仮想の紙をリアルタイムでくしゃくしゃにし、折ります。Kang &amp;amp; Cho『A Simple and Effective Model for Interactive Paper Folding』に基づきます。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;tools: push, grab, pin&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (push)&lt;/td&gt;&lt;td&gt;press the sphere into the paper and plough it (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (grab)&lt;/td&gt;&lt;td&gt;pick up the point under the cursor and drag it; the wheel lifts or lowers it while held; release lets it fall&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Click&lt;/b&gt; (pin)&lt;/td&gt;&lt;td&gt;pin the paper around the point, or free it if it is pinned&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius (and the pin region)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+K&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, settle, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;、&lt;b&gt;G&lt;/b&gt;、&lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ツール：押す、つかむ、ピン留め&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;左ドラッグ&lt;/b&gt;（押す）&lt;/td&gt;&lt;td&gt;球を紙に押し込んでかき分けます（1ストロークで1回の取り消し単位）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;左ドラッグ&lt;/b&gt;（つかむ）&lt;/td&gt;&lt;td&gt;カーソルの下の点をつまんでドラッグします。押している間はホイールで上げ下げでき、離すと落ちます&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;クリック&lt;/b&gt;（ピン留め）&lt;/td&gt;&lt;td&gt;その点の周りの紙を固定します。固定済みなら解除します&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + ホイール&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球の半径（とピン留めの範囲）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;右ドラッグ&lt;/b&gt;、矢印キー&lt;/td&gt;&lt;td&gt;カメラを回転&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;中ドラッグ&lt;/b&gt;、Shift + 右ドラッグ&lt;/td&gt;&lt;td&gt;パン&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;ホイール&lt;/b&gt;、+ と −&lt;/td&gt;&lt;td&gt;ズーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;、&lt;b&gt;2&lt;/b&gt;、&lt;b&gt;3&lt;/b&gt;、&lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;上面・正面・等角ビュー、シートに合わせる&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;、&lt;b&gt;Ctrl+.&lt;/b&gt;、&lt;b&gt;Ctrl+K&lt;/b&gt;、&lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;再生/一時停止、1ステップ、静止させる、リセット&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;オーバーレイ：ばねの種類、破断確率、ひずみ、最近の破断、ワイヤーフレーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;、&lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;元に戻す、やり直し&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
 </context>
 <context>
@@ -414,6 +456,10 @@
     <message>
         <source>Settling once the simulation plays (Space).</source>
         <translation>シミュレーションが動くと静止させます（スペース）。</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>ツール(&amp;T)</translation>
     </message>
 </context>
 <context>

@@ -48,6 +48,24 @@
         <source>Settle</source>
         <translation>안정</translation>
     </message>
+    <message numerus="yes">
+        <source>Grab (%n break(s) or fold(s))</source>
+        <translation>
+            <numerusform>잡기 (파단 또는 접힘 %n개)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Pin %n vertex(es)</source>
+        <translation>
+            <numerusform>고정 (정점 %n개)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Unpin %n vertex(es)</source>
+        <translation>
+            <numerusform>고정 해제 (정점 %n개)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>pf::ActionTexts</name>
@@ -191,6 +209,30 @@
         <source>Let the sheet come to rest without new breaks and keep it so until the next edit (Ctrl+K)</source>
         <translation>새 파단 없이 시트를 멈추게 하고 다음 편집까지 그대로 둡니다 (Ctrl+K)</translation>
     </message>
+    <message>
+        <source>&amp;Push</source>
+        <translation>누르기(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Push: the left button presses the sphere into the sheet and ploughs it (P)</source>
+        <translation>누르기: 왼쪽 버튼으로 구를 종이에 눌러 넣고 밀어 갑니다 (P)</translation>
+    </message>
+    <message>
+        <source>&amp;Grab</source>
+        <translation>잡기(&amp;G)</translation>
+    </message>
+    <message>
+        <source>Grab: pick up a point of the sheet and drag it; the wheel lifts or lowers it while held; release lets it fall (G)</source>
+        <translation>잡기: 종이의 한 점을 집어 끌어 옮깁니다. 누르고 있는 동안 휠로 올리거나 내리고, 놓으면 떨어집니다 (G)</translation>
+    </message>
+    <message>
+        <source>P&amp;in</source>
+        <translation>고정(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Pin: a click pins the paper around the point, or frees it if it is pinned; Ctrl + wheel sizes the region (I)</source>
+        <translation>고정: 클릭하면 그 점 주변의 종이를 고정하고, 이미 고정되어 있으면 풀어 줍니다. Ctrl + 휠로 영역 크기를 바꿉니다 (I)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>
@@ -261,16 +303,16 @@
         <translation>마우스와 키</translation>
     </message>
     <message>
-        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Move the mouse&lt;/b&gt;&lt;/td&gt;&lt;td&gt;the sphere follows the cursor over the sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt;&lt;/td&gt;&lt;td&gt;push the sphere into the paper (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;마우스 이동&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구가 커서를 따라 종이 위를 움직입니다&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;왼쪽 드래그&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구를 종이에 눌러 넣습니다 (한 번의 스트로크가 한 번의 실행 취소 단위)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + 휠&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구 반지름&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;오른쪽 드래그&lt;/b&gt;, 화살표 키&lt;/td&gt;&lt;td&gt;카메라 회전&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;가운데 드래그&lt;/b&gt;, Shift + 오른쪽 드래그&lt;/td&gt;&lt;td&gt;이동&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;휠&lt;/b&gt;, + 와 −&lt;/td&gt;&lt;td&gt;확대/축소&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;위, 앞, 등각 보기; 종이에 맞추기&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;재생/일시 정지, 한 단계, 초기화&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;오버레이: 스프링 종류, 파단 확률, 변형률, 최근 파단, 와이어프레임&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;실행 취소, 다시 실행&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
-    </message>
-    <message>
         <source>About PaperFold</source>
         <translation>PaperFold 정보</translation>
     </message>
     <message>
         <source>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Crumple and fold virtual paper in real time, after Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;가상의 종이를 실시간으로 구기고 접습니다. Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;에 기반합니다.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;tools: push, grab, pin&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (push)&lt;/td&gt;&lt;td&gt;press the sphere into the paper and plough it (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (grab)&lt;/td&gt;&lt;td&gt;pick up the point under the cursor and drag it; the wheel lifts or lowers it while held; release lets it fall&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Click&lt;/b&gt; (pin)&lt;/td&gt;&lt;td&gt;pin the paper around the point, or free it if it is pinned&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius (and the pin region)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+K&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, settle, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;도구: 누르기, 잡기, 고정&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;왼쪽 드래그&lt;/b&gt; (누르기)&lt;/td&gt;&lt;td&gt;구를 종이에 눌러 넣고 밀어 갑니다 (한 번의 스트로크가 한 번의 실행 취소 단위)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;왼쪽 드래그&lt;/b&gt; (잡기)&lt;/td&gt;&lt;td&gt;커서 아래의 점을 집어 끌어 옮깁니다. 누르고 있는 동안 휠로 올리거나 내리고, 놓으면 떨어집니다&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;클릭&lt;/b&gt; (고정)&lt;/td&gt;&lt;td&gt;그 점 주변의 종이를 고정하거나, 고정되어 있으면 풀어 줍니다&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + 휠&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구 반지름 (및 고정 영역)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;오른쪽 드래그&lt;/b&gt;, 화살표 키&lt;/td&gt;&lt;td&gt;카메라 회전&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;가운데 드래그&lt;/b&gt;, Shift + 오른쪽 드래그&lt;/td&gt;&lt;td&gt;이동&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;휠&lt;/b&gt;, + 와 −&lt;/td&gt;&lt;td&gt;확대/축소&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;위, 앞, 등각 보기; 종이에 맞추기&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+K&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;재생/일시 정지, 한 단계, 안정시키기, 초기화&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;오버레이: 스프링 종류, 파단 확률, 변형률, 최근 파단, 와이어프레임&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;실행 취소, 다시 실행&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
 </context>
 <context>
@@ -414,6 +456,10 @@
     <message>
         <source>Settling once the simulation plays (Space).</source>
         <translation>시뮬레이션이 재생되면 안정시킵니다 (Space).</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>도구(&amp;T)</translation>
     </message>
 </context>
 <context>

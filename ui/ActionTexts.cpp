@@ -32,6 +32,14 @@ void ActionTexts::apply(const QObject* window) {
         tr("Let the sheet come to rest without new breaks and keep it so until the next edit "
            "(Ctrl+K)"));
     set("reset", tr("&Reset"), tr("Start the current scene again"));
+    set("tool.push", tr("&Push"),
+        tr("Push: the left button presses the sphere into the sheet and ploughs it (P)"));
+    set("tool.grab", tr("&Grab"),
+        tr("Grab: pick up a point of the sheet and drag it; the wheel lifts or lowers it "
+           "while held; release lets it fall (G)"));
+    set("tool.pin", tr("P&in"),
+        tr("Pin: a click pins the paper around the point, or frees it if it is pinned; "
+           "Ctrl + wheel sizes the region (I)"));
     set("overlay.springs", tr("&Spring kinds"));
     set("overlay.probability", tr("&Break probability"));
     set("overlay.strain", tr("S&train"));

@@ -91,11 +91,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         malloc_trim(0);
 #endif
     });
-    connect(sim_.get(), &SimulationThread::strokeRecorded, this, [this](int stroke, int events) {
-        undo_->push(new PushStrokeCommand(sim_.get(), stroke, events));
-    });
+    connect(sim_.get(), &SimulationThread::strokeRecorded, this,
+            [this](int stroke, int events, int kind) {
+                undo_->push(new StrokeCommand(sim_.get(), stroke, events, kind));
+            });
     connect(sim_.get(), &SimulationThread::settled, this, [this](int stroke) {
-        undo_->push(PushStrokeCommand::settle(sim_.get(), stroke));
+        undo_->push(new StrokeCommand(sim_.get(), stroke, 0,
+                                      static_cast<int>(EditSession::StrokeKind::Settle)));
         statusBar()->showMessage(tr("Settled: the sheet stays as it is until the next edit."),
                                  5000);
     });
@@ -253,6 +255,21 @@ void MainWindow::createActions() {
                 if (maybeSave()) newScene(scene_);
             });
 
+    auto* tools = new QActionGroup(this);
+    const std::pair<const char*, ViewportInput::Tool> kTools[] = {
+        {"tool.push", ViewportInput::Tool::Push},
+        {"tool.grab", ViewportInput::Tool::Grab},
+        {"tool.pin", ViewportInput::Tool::Pin}};
+    const Qt::Key kToolKeys[] = {Qt::Key_P, Qt::Key_G, Qt::Key_I};
+    for (int k = 0; k < 3; ++k) {
+        QAction* a = make(kTools[k].first, QKeySequence(kToolKeys[k]));
+        a->setCheckable(true);
+        a->setChecked(k == 0);
+        tools->addAction(a);
+        const ViewportInput::Tool tool = kTools[k].second;
+        connect(a, &QAction::triggered, this, [this, tool] { input_->setTool(tool); });
+    }
+
     for (int k = 0; k < 5; ++k) {
         QAction* a = make(kOverlayActions[k], QKeySequence(QStringLiteral("Alt+%1").arg(k + 1)));
         a->setCheckable(true);
@@ -297,6 +314,10 @@ void MainWindow::createMenus() {
     editMenu_->addAction(action("undo"));
     editMenu_->addAction(action("redo"));
 
+    toolMenu_ = menuBar()->addMenu(QString());
+    for (const char* name : {"tool.push", "tool.grab", "tool.pin"})
+        toolMenu_->addAction(action(name));
+
     viewMenu_ = menuBar()->addMenu(QString());
     overlayMenu_ = viewMenu_->addMenu(QString());
     for (const char* name : kOverlayActions) overlayMenu_->addAction(action(name));
@@ -317,6 +338,9 @@ void MainWindow::createMenus() {
     toolBar_ = addToolBar(QString());
     toolBar_->setObjectName(QStringLiteral("mainToolBar"));
     for (const char* name : {"open", "save", "undo", "redo", "play", "step", "reset"})
+        toolBar_->addAction(action(name));
+    toolBar_->addSeparator();
+    for (const char* name : {"tool.push", "tool.grab", "tool.pin"})
         toolBar_->addAction(action(name));
     toolBar_->addSeparator();
     for (const char* name : kOverlayActions) toolBar_->addAction(action(name));
@@ -359,6 +383,7 @@ void MainWindow::retranslate() {
     overlayMenu_->setTitle(tr("&Overlays"));
     languageMenu_->setTitle(tr("&Language"));
     simMenu_->setTitle(tr("&Simulation"));
+    toolMenu_->setTitle(tr("&Tools"));
     helpMenu_->setTitle(tr("&Help"));
     toolBar_->setWindowTitle(tr("Main toolbar"));
     panelDock_->setWindowTitle(tr("Parameters"));
@@ -512,8 +537,10 @@ void MainWindow::exportImage() {
     const QString path = chooseFile(FileDialog::ExportImage);
     if (path.isEmpty()) return;
     QString error;
-    if (!exportSnapshotImage(*snap, viewport_->camera(), viewport_->renderOptions(), size.width(),
-                             size.height(), path, &error))
+    RenderOptions picture = viewport_->renderOptions();
+    picture.pins = false; // editing marks, not the artwork
+    if (!exportSnapshotImage(*snap, viewport_->camera(), picture, size.width(), size.height(), path,
+                             &error))
         showError(tr("Could not export the image: %1").arg(error));
 }
 

@@ -103,7 +103,7 @@ class MainWindow : public QMainWindow {
     QToolBar* toolBar_ = nullptr;
     QMenu *fileMenu_ = nullptr, *newMenu_ = nullptr, *recentMenu_ = nullptr, *editMenu_ = nullptr,
           *viewMenu_ = nullptr, *overlayMenu_ = nullptr, *languageMenu_ = nullptr,
-          *simMenu_ = nullptr, *helpMenu_ = nullptr;
+          *simMenu_ = nullptr, *helpMenu_ = nullptr, *toolMenu_ = nullptr;
     StatusReadout* readout_ = nullptr;
     QActionGroup* languageGroup_ = nullptr;
 

@@ -106,6 +106,12 @@ void SimulationThread::replaceWorld(const World& world) {
 void SimulationThread::setTool(const Vec3& target, double radius, bool visible, bool pressed) {
     PF_POST(setTool(target, radius, visible, pressed));
 }
+void SimulationThread::grab(const Vec3& target, bool held) {
+    PF_POST(grab(target, held));
+}
+void SimulationThread::pin(const Vec3& point, double radius) {
+    PF_POST(pin(point, radius));
+}
 void SimulationThread::undoStroke(int stroke) {
     PF_POST(undoStroke(stroke));
 }

@@ -41,6 +41,11 @@ class SimulationThread : public QObject {
     // The tool: where the user points (target centre), its radius, and whether the
     // mouse button is down (a push stroke lasts from press to release).
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
+    // The grab tool: pulls the sheet's vertex nearest to where the grab began toward
+    // `target` while held (EditSession::grab).
+    void grab(const Vec3& target, bool held);
+    // The pin tool: toggles the pins within `radius` of `point` (EditSession::pin).
+    void pin(const Vec3& point, double radius);
     void undoStroke(int stroke);
     void redoStroke(int stroke);
     // Lets the sheet come to rest without damage and keeps it so until the next edit
@@ -57,8 +62,10 @@ class SimulationThread : public QObject {
 
   signals:
     void snapshotReady();
-    // A push stroke ended that broke or hinged something: it can be undone as one step.
-    void strokeRecorded(int stroke, int events);
+    // A push or grab stroke ended that changed the sheet, or a pin was set or taken:
+    // it can be undone as one step. `kind` is an EditSession::StrokeKind; `events` the
+    // breaks and hinges it made, or the vertices it (un)pinned.
+    void strokeRecorded(int stroke, int events, int kind);
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
     void settled(int stroke);

@@ -56,9 +56,21 @@ void SimulationWorker::replaceWorld(const World& world) {
 }
 
 void SimulationWorker::setTool(const Vec3& target, double radius, bool visible, bool pressed) {
-    const auto ended = session_.setTool(target, radius, visible, pressed);
-    if (!ended) return;
-    emit strokeRecorded(ended->stroke, ended->events);
+    announce(session_.setTool(target, radius, visible, pressed));
+}
+
+void SimulationWorker::grab(const Vec3& target, bool held) {
+    announce(session_.grab(target, held));
+}
+
+void SimulationWorker::pin(const Vec3& point, double radius) {
+    const auto ended = session_.pin(point, radius);
+    announce(ended);
+    if (ended) publish(0.0); // the pins show while paused too
+}
+
+void SimulationWorker::announce(const std::optional<EditSession::StrokeEnd>& ended) {
+    if (ended) emit strokeRecorded(ended->stroke, ended->events, static_cast<int>(ended->kind));
 }
 
 void SimulationWorker::undoStroke(int stroke) {

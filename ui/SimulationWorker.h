@@ -30,6 +30,8 @@ class SimulationWorker : public QObject {
     void setParams(const SimParams& params);
     void replaceWorld(const World& world);
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
+    void grab(const Vec3& target, bool held);
+    void pin(const Vec3& point, double radius);
     void undoStroke(int stroke);
     void redoStroke(int stroke);
     void settle();
@@ -41,7 +43,7 @@ class SimulationWorker : public QObject {
   signals:
     void published(std::shared_ptr<const pf::SheetSnapshot> snapshot,
                    const pf::SimulationStatus& status);
-    void strokeRecorded(int stroke, int events);
+    void strokeRecorded(int stroke, int events, int kind);
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
     void settled(int stroke); // a Settle froze the sheet: an undo step
@@ -52,6 +54,7 @@ class SimulationWorker : public QObject {
     void frame();
     void advance(int steps);
     void publish(double stepSeconds);
+    void announce(const std::optional<EditSession::StrokeEnd>& ended);
 
     EditSession session_;
     SimulationChannel& channel_;

@@ -1,28 +1,42 @@
 #include "UndoCommands.h"
 
+#include "EditSession.h"
 #include "SimulationThread.h"
 
 #include <QCoreApplication>
 
 namespace pf {
 
-PushStrokeCommand::PushStrokeCommand(SimulationThread* sim, int stroke, int events)
+StrokeCommand::StrokeCommand(SimulationThread* sim, int stroke, int events, int kind)
     : sim_(sim), stroke_(stroke) {
-    setText(QCoreApplication::translate("UndoCommands", "Push (%n break(s) or fold(s))", nullptr,
-                                        events));
+    // Each text spelled out at its call, where lupdate finds it.
+    switch (static_cast<EditSession::StrokeKind>(kind)) {
+    case EditSession::StrokeKind::Push:
+        setText(QCoreApplication::translate("UndoCommands", "Push (%n break(s) or fold(s))",
+                                            nullptr, events));
+        break;
+    case EditSession::StrokeKind::Grab:
+        setText(QCoreApplication::translate("UndoCommands", "Grab (%n break(s) or fold(s))",
+                                            nullptr, events));
+        break;
+    case EditSession::StrokeKind::Pin:
+        setText(QCoreApplication::translate("UndoCommands", "Pin %n vertex(es)", nullptr, events));
+        break;
+    case EditSession::StrokeKind::Unpin:
+        setText(
+            QCoreApplication::translate("UndoCommands", "Unpin %n vertex(es)", nullptr, events));
+        break;
+    case EditSession::StrokeKind::Settle:
+        setText(QCoreApplication::translate("UndoCommands", "Settle"));
+        break;
+    }
 }
 
-PushStrokeCommand* PushStrokeCommand::settle(SimulationThread* sim, int stroke) {
-    auto* c = new PushStrokeCommand(sim, stroke, 0);
-    c->setText(QCoreApplication::translate("UndoCommands", "Settle"));
-    return c;
-}
-
-void PushStrokeCommand::undo() {
+void StrokeCommand::undo() {
     sim_->undoStroke(stroke_);
 }
 
-void PushStrokeCommand::redo() {
+void StrokeCommand::redo() {
     if (done_) {
         done_ = false; // it happened live; nothing to do on the push itself
         return;

@@ -9,15 +9,15 @@ namespace pf {
 
 class SimulationThread;
 
-// One push stroke, or a Settle (an undo step of the same kind in EditSession). It has
+// One of EditSession's undo steps: a push or grab stroke, a pin, or a Settle. It has
 // already happened when pushed, so the first redo does nothing; undo recovers the
 // stroke's broken edges in reverse order (§4.2) and gives back the sheet from before
 // it, and redo breaks the same edges again.
-class PushStrokeCommand : public QUndoCommand {
+class StrokeCommand : public QUndoCommand {
   public:
-    PushStrokeCommand(SimulationThread* sim, int stroke, int events);
-    // A Settle: nothing broken, the sheet kept as it came to rest.
-    static PushStrokeCommand* settle(SimulationThread* sim, int stroke);
+    // `kind` is an EditSession::StrokeKind; `events` the breaks and hinges it made, or
+    // for a pin the vertices.
+    StrokeCommand(SimulationThread* sim, int stroke, int events, int kind);
     void undo() override;
     void redo() override;
 

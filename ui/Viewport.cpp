@@ -37,6 +37,7 @@ class Viewport::Overlay : public QWidget {
 Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent), overlay_(new Overlay(this)) {
     setFormat(requiredFormat());
     setMinimumSize(160, 120);
+    options_.pins = true; // the artist sees where the sheet is held
 }
 
 void Viewport::resizeEvent(QResizeEvent* event) {

@@ -19,7 +19,36 @@ ViewportInput::ViewportInput(Viewport* viewport, SimulationThread* simulation, Q
 
 void ViewportInput::setToolRadius(double radius) {
     toolRadius_ = radius;
-    sim_->setTool(toolTarget_, toolRadius_, true, toolPressed_);
+    if (tool_ == Tool::Push) sim_->setTool(toolTarget_, toolRadius_, true, toolPressed_);
+}
+
+void ViewportInput::setTool(Tool tool) {
+    if (tool == tool_) return;
+    if (grabbing_) useGrab(grabPixel_, false); // let go of what is held
+    tool_ = tool;
+    hideTool();
+    switch (tool) {
+    case Tool::Push:
+        viewport_->unsetCursor();
+        break;
+    case Tool::Grab:
+        viewport_->setCursor(Qt::OpenHandCursor);
+        break;
+    case Tool::Pin:
+        viewport_->setCursor(Qt::CrossCursor);
+        break;
+    }
+}
+
+OrbitCamera::Ray ViewportInput::rayAt(const QPoint& pixel) const {
+    return viewport_->camera().rayThroughPixel(pixel.x() + 0.5, pixel.y() + 0.5, viewport_->width(),
+                                               viewport_->height());
+}
+
+std::optional<PickHit> ViewportInput::pick(const QPoint& pixel) const {
+    auto snap = viewport_->snapshot();
+    if (!snap) return std::nullopt;
+    return pickSheet(*snap, rayAt(pixel));
 }
 
 void ViewportInput::fitCamera() {
@@ -40,21 +69,58 @@ void ViewportInput::setView(const char* name) {
 }
 
 void ViewportInput::pointTool(const QPoint& pixel, bool pressed) {
-    auto snap = viewport_->snapshot();
-    if (!snap) return;
-    const OrbitCamera::Ray ray = viewport_->camera().rayThroughPixel(
-        pixel.x() + 0.5, pixel.y() + 0.5, viewport_->width(), viewport_->height());
-    const auto hit = pickSheet(*snap, ray);
+    const auto hit = pick(pixel);
     if (!hit) return;
     toolTarget_ = toolCenter(*hit, toolRadius_, pressed ? kPushDepth * toolRadius_ : 0.0);
     const bool began = pressed && !toolPressed_;
     toolPressed_ = pressed;
+    toolShown_ = true;
     sim_->setTool(toolTarget_, toolRadius_, true, pressed);
     if (began) emit strokeBegan();
 }
 
+void ViewportInput::useGrab(const QPoint& pixel, bool held) {
+    if (!grabbing_) {
+        if (!held) return;
+        const auto hit = pick(pixel);
+        if (!hit || !hit->onSheet) return;
+        grabbing_ = true;
+        grabPoint_ = hit->point;
+        grabPixel_ = pixel;
+        viewport_->setCursor(Qt::ClosedHandCursor);
+        sim_->grab(grabPoint_, true);
+        emit strokeBegan();
+        return;
+    }
+    // The point under the cursor in the plane through the grabbed point that faces the
+    // view: dragging moves it across the screen at the depth it was picked up at.
+    grabPixel_ = pixel;
+    const OrbitCamera::Ray ray = rayAt(pixel);
+    const Vec3 facing = (viewport_->camera().target - viewport_->camera().eye()).normalized();
+    const double along = ray.direction.dot(facing);
+    Vec3 target = grabPoint_;
+    if (std::abs(along) > 1e-9)
+        target = ray.origin + ray.direction * ((grabPoint_ - ray.origin).dot(facing) / along);
+    sim_->grab(target, held);
+    if (held) return;
+    grabbing_ = false;
+    viewport_->setCursor(Qt::OpenHandCursor);
+}
+
+void ViewportInput::usePin(const QPoint& pixel, bool pressed) {
+    const bool click = pressed && !pinHeld_;
+    pinHeld_ = pressed;
+    if (!click) return;
+    const auto hit = pick(pixel);
+    if (!hit || !hit->onSheet) return;
+    sim_->pin(hit->point, kPinShare * toolRadius_);
+    emit strokeBegan();
+}
+
 void ViewportInput::hideTool() {
     toolPressed_ = false;
+    if (!toolShown_) return;
+    toolShown_ = false;
     sim_->setTool(toolTarget_, toolRadius_, false, false);
 }
 
@@ -119,11 +185,30 @@ bool ViewportInput::eventFilter(QObject* watched, QEvent* event) {
             viewport_->setCamera(c);
             return true;
         }
-        pointTool(pos, e->buttons() & Qt::LeftButton);
+        const bool left = e->buttons() & Qt::LeftButton;
+        switch (tool_) {
+        case Tool::Push:
+            pointTool(pos, left);
+            break;
+        case Tool::Grab:
+            useGrab(pos, left);
+            break;
+        case Tool::Pin:
+            usePin(pos, left);
+            break;
+        }
         return true;
     }
     case QEvent::Wheel: {
         auto* e = static_cast<QWheelEvent*>(event);
+        if (grabbing_) {
+            // Nearer the eye (up, seen from above) or further away.
+            const OrbitCamera& c = viewport_->camera();
+            const Vec3 toEye = (c.eye() - c.target).normalized();
+            grabPoint_ += toEye * (kGrabWheelStep * e->angleDelta().y() / 120.0);
+            useGrab(grabPixel_, true);
+            return true;
+        }
         if (!(e->modifiers() & Qt::ControlModifier)) return orbitPanOrZoom(event);
         const double notches = e->angleDelta().y() / 120.0;
         setToolRadius(std::clamp(toolRadius_ * std::pow(1.1, notches), 0.01, 0.10));

@@ -1,9 +1,12 @@
 #pragma once
 
+#include "Camera.h"
+#include "Picking.h"
 #include "Types.h"
 
 #include <QObject>
 #include <QPoint>
+#include <optional>
 
 namespace pf {
 
@@ -12,22 +15,33 @@ class Viewport;
 
 // Turns the viewport's mouse, wheel and keys into camera moves and tool commands:
 // right drag orbits, middle (or Shift + right) drag pans, the wheel zooms, Ctrl + wheel
-// sizes the tool, the left button pushes the tool into the sheet where the cursor's ray
-// meets it, arrows and +/- orbit and zoom. Installed as the viewport's event filter.
+// sizes the tool, arrows and +/- orbit and zoom. The left button uses the chosen tool
+// where the cursor's ray meets the sheet: Push presses the sphere into it, Grab picks
+// the point up and drags it in the plane facing the view (the wheel moves it nearer or
+// further meanwhile), Pin toggles the pins around the point. Installed as the viewport's
+// event filter.
 class ViewportInput : public QObject {
     Q_OBJECT
 
   public:
     ViewportInput(Viewport* viewport, SimulationThread* simulation, QObject* parent = nullptr);
 
+    enum class Tool { Push, Grab, Pin };
+    Tool tool() const { return tool_; }
+    void setTool(Tool tool);
+
     // How far a pressed tool reaches into the paper, as a share of its radius.
     static constexpr double kPushDepth = 0.6;
     static constexpr double kDefaultToolRadius = 0.03; // m
+    // A pin click toggles the vertices within this share of the tool's radius.
+    static constexpr double kPinShare = 0.5;
+    // How far one wheel notch moves a grabbed point toward or away from the eye.
+    static constexpr double kGrabWheelStep = 0.01; // m
 
     double toolRadius() const { return toolRadius_; }
     void setToolRadius(double radius);
     Vec3 toolTarget() const { return toolTarget_; }
-    bool toolPressed() const { return toolPressed_; }
+    bool toolPressed() const { return toolPressed_ || grabbing_; }
 
     // Fits the sheet into view, keeping the direction; sets a named view (top, front,
     // iso), keeping the target and distance.
@@ -43,6 +57,11 @@ class ViewportInput : public QObject {
 
   private:
     void pointTool(const QPoint& pixel, bool pressed);
+    // Grab and Pin: the left button at `pixel` (pressed, moved with it held, released).
+    void useGrab(const QPoint& pixel, bool held);
+    void usePin(const QPoint& pixel, bool pressed);
+    std::optional<PickHit> pick(const QPoint& pixel) const;
+    OrbitCamera::Ray rayAt(const QPoint& pixel) const;
     void hideTool();
     bool orbitPanOrZoom(QEvent* event);
 
@@ -51,6 +70,12 @@ class ViewportInput : public QObject {
     double toolRadius_ = kDefaultToolRadius;
     Vec3 toolTarget_ = Vec3::Zero();
     bool toolPressed_ = false;
+    bool toolShown_ = true; // a scene may start with the sphere shown
+    Tool tool_ = Tool::Push;
+    bool grabbing_ = false;
+    Vec3 grabPoint_ = Vec3::Zero(); // the plane the grab moves in passes through it
+    QPoint grabPixel_;
+    bool pinHeld_ = false;
     QPoint lastMouse_;
 };
 
