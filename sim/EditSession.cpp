@@ -68,7 +68,7 @@ void EditSession::apply(const EditCommand& c) {
         settle();
         break;
     case EditCommand::Kind::Grab:
-        grab(c.target, c.pressed);
+        grab(c.target, c.pressed, c.visible);
         break;
     case EditCommand::Kind::Pin:
         pin(c.target, c.radius);
@@ -115,7 +115,7 @@ void EditSession::replaceWorld(const World& world) {
     sim_.world().script.sphereKeys.clear();
     sim_.world().sphere.radius = tool.radius;
     sim_.world().sphere.active = tool.active;
-    grabbed_ = kNone; // a vertex of the old sheet
+    grabbed_ = kNone; // a vertex of the old sheet (the new Simulation holds none)
     strokes_.clear();
     // A stroke held across New goes on from the new sheet.
     if (pressed_) beginStroke();
@@ -151,12 +151,14 @@ std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, d
     return released ? endStroke(StrokeKind::Push) : std::nullopt;
 }
 
-std::optional<EditSession::StrokeEnd> EditSession::grab(const Vec3& target, bool held) {
-    record({EditCommand::Kind::Grab, 0, target, 0.0, false, held, -1, nullptr});
+std::optional<EditSession::StrokeEnd> EditSession::grab(const Vec3& target, bool held, bool begin) {
+    record({EditCommand::Kind::Grab, 0, target, 0.0, begin, held, -1, nullptr});
     const World& w = sim_.world();
     grabTarget_ = target;
     if (w.groundEnabled) grabTarget_.y() = std::max(grabTarget_.y(), w.groundHeight);
-    if (held && !grabbing() && !pressed_) {
+    // Only an explicit begin picks up: after an undo let go, moves of the hand that
+    // still holds nothing must not pick up whatever is nearest.
+    if (begin && held && !grabbing() && !pressed_) {
         const auto& V = w.sheet.verts;
         double nearest = std::numeric_limits<double>::infinity();
         for (Index i = 0; i < V.size(); ++i) {
@@ -169,6 +171,7 @@ std::optional<EditSession::StrokeEnd> EditSession::grab(const Vec3& target, bool
         if (grabbing()) {
             beginStroke();
             setPins({grabbed_}, true);
+            sim_.setHeldVertex(grabbed_);
         }
         return std::nullopt;
     }
@@ -179,9 +182,15 @@ std::optional<EditSession::StrokeEnd> EditSession::grab(const Vec3& target, bool
 
 void EditSession::releaseGrab() {
     if (!grabbing()) return;
-    Sheet& s = sim_.world().sheet;
-    if (grabbed_ < s.verts.size()) s.verts.pinned[grabbed_] = 0; // keeps its velocity: a throw
+    setPins({grabbed_}, false); // it keeps its velocity: a throw
     grabbed_ = kNone;
+    sim_.setHeldVertex(kNone);
+}
+
+World EditSession::worldToSave() const {
+    World w = sim_.world();
+    if (grabbing()) w.sheet.verts.pinned[grabbed_] = 0; // held by the hand, not pinned
+    return w;
 }
 
 void EditSession::pullGrabbed() {
@@ -195,7 +204,9 @@ void EditSession::pullGrabbed() {
 }
 
 void EditSession::setPins(const std::vector<Index>& vertices, bool pinned) {
-    auto& V = sim_.world().sheet.verts;
+    Sheet& sheet = sim_.world().sheet;
+    sheet.paper.quietSteps = 0; // a sleeping sheet wakes: what held it may be gone
+    auto& V = sheet.verts;
     for (Index i : vertices) {
         if (i < 0 || i >= V.size()) continue;
         V.pinned[i] = pinned ? 1 : 0;

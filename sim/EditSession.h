@@ -27,10 +27,11 @@ struct EditCommand {
     };
     Kind kind = Kind::Tool;
     std::int64_t step = 0;
-    Vec3 target = Vec3::Zero();              // Tool, Grab, Pin
-    double radius = 0.0;                     // Tool, Pin
-    bool visible = false;                    // Tool
-    bool pressed = false;                    // Tool, Grab (held)
+    Vec3 target = Vec3::Zero(); // Tool, Grab, Pin
+    double radius = 0.0;        // Tool, Pin
+    bool visible = false;       // Tool
+    bool pressed = false;       // Tool, Grab (held)
+    // `visible` for a Grab: it begins (picks a vertex up).
     int stroke = -1;                         // Undo, Redo
     std::shared_ptr<const SimParams> params; // Params (shared: most commands are tool moves)
 };
@@ -88,13 +89,16 @@ class EditSession {
     // limit) a redo is refused, so that undo/redo cannot grow the log without bound.
     static constexpr std::size_t kMaxDamageEvents = 8'000'000;
 
-    // Grab: while `held`, the free vertex nearest to where the grab began follows `target`
+    // Grab: `begin` picks up the free vertex nearest to `target`; while `held` it follows
+    // `target`
     // (no faster than kMaxToolSpeed, never below the ground), pinned for the solver, so
     // the sheet hangs from it; on release it is let go with its velocity and falls. A
     // grab is a stroke like a push. Refused while the push tool is pressed; a pinned
     // vertex is not grabbed (the pin holds).
-    std::optional<StrokeEnd> grab(const Vec3& target, bool held);
+    std::optional<StrokeEnd> grab(const Vec3& target, bool held, bool begin);
     bool grabbing() const { return grabbed_ != kNone; }
+    // The world as a file should keep it: a grabbed vertex is held, not pinned.
+    World worldToSave() const;
     Index grabbedVertex() const { return grabbed_; }
     // Pin: toggles the vertices within `radius` of `point` — pinned when the one nearest
     // to it is free, freed when it is pinned. Pinned vertices stand still and are saved

@@ -14,7 +14,8 @@ Vec3 spherePathAt(const std::vector<SphereKey>& keys, double t) {
     return keys.back().center;
 }
 
-void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, SphereTool& sphere) {
+void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, SphereTool& sphere,
+                 Index held) {
     if (!script.sphereKeys.empty()) {
         const Vec3 next = spherePathAt(script.sphereKeys, t + h);
         sphere.velocity = (next - sphere.center) / h;
@@ -25,7 +26,7 @@ void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, Sp
         const Vec3 v = t < g.until ? g.velocity : Vec3::Zero();
         // A vertex the user has unpinned is the forces' again.
         for (Index i : g.vertices)
-            if (sheet.verts.pinned[i]) sheet.verts.v[i] = v;
+            if (sheet.verts.pinned[i] && i != held) sheet.verts.v[i] = v;
     }
 }
 

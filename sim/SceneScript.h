@@ -27,8 +27,10 @@ struct SceneScript {
 
 // Sets the sphere and the pinned vertices for the step from t to t + h: the sphere
 // moves to its scripted position at t + h with the matching velocity; a group's vertices
-// that are still pinned get its velocity (positions then advance with the integrator).
-void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, SphereTool& sphere);
+// that are still pinned, but for `held` (one the user holds), get its velocity
+// (positions then advance with the integrator).
+void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, SphereTool& sphere,
+                 Index held = kNone);
 
 // Position on the sphere path at time t (held constant outside the keys).
 Vec3 spherePathAt(const std::vector<SphereKey>& keys, double t);

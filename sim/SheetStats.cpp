@@ -55,4 +55,10 @@ std::uint64_t stateHash(const Sheet& sheet) {
     return h;
 }
 
+std::uint64_t editedStateHash(const Sheet& sheet) {
+    std::uint64_t h = stateHash(sheet);
+    for (std::uint8_t pinned : sheet.verts.pinned) h = (h ^ pinned) * 0x100000001b3ULL;
+    return h;
+}
+
 } // namespace pf

@@ -27,6 +27,9 @@ SheetStats computeStats(const Sheet& sheet);
 // FNV-1a over the bytes of every position and velocity, in storage order: two
 // states hash equal only if they are bit-identical (up to hash collisions).
 std::uint64_t stateHash(const Sheet& sheet);
+// stateHash and the pins: what the editor compares to tell whether a sheet differs from
+// its file (a pin changes nothing stateHash sees while the sheet rests).
+std::uint64_t editedStateHash(const Sheet& sheet);
 
 double totalMass(const Sheet& sheet);
 

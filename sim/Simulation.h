@@ -52,6 +52,9 @@ class Simulation {
         sheetEdited();
     }
 
+    // A vertex the user holds (a grab): the scene script leaves it to the user.
+    void setHeldVertex(Index vertex) { heldVertex_ = vertex; }
+
     World& world() { return world_; }
     const World& world() const { return world_; }
 
@@ -72,6 +75,7 @@ class Simulation {
     int lastHinges_ = 0;
     mutable bool probabilitiesCurrent_ = false;
     bool damageAllowed_ = true;
+    Index heldVertex_ = kNone;
 };
 
 // Positions far beyond this distance from the origin (metres) count as a blow-up.

@@ -576,11 +576,13 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     const Index nv = V.size();
     std::int64_t active = 0;
     for (const DamageEvent& ev : sheet.events) active += ev.active ? 1 : 0;
-    std::int64_t pins = 0, pinSum = 0;
+    // Which vertices are pinned, not only how many: the user pins and unpins (FNV-1a).
+    std::int64_t pins = 0;
+    std::uint64_t pinHash = 14695981039346656037ull;
     for (Index i = 0; i < nv; ++i)
         if (V.pinned[i]) {
             ++pins;
-            pinSum += i;
+            pinHash = (pinHash ^ static_cast<std::uint64_t>(i)) * 1099511628211ull;
         }
     const std::array<std::int64_t, 7> signature{nv,
                                                 S.size(),
@@ -588,7 +590,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
                                                 static_cast<std::int64_t>(sheet.events.size()),
                                                 active,
                                                 pins,
-                                                pinSum};
+                                                static_cast<std::int64_t>(pinHash)};
     // A changed mesh or paper has already let the tool go and woken the sheet
     // (PaperState::meshChanged, where the change was made).
     if (signature != signature_ || !(builtFor_ == params.material)) {

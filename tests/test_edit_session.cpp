@@ -423,11 +423,11 @@ class TestEditSession : public QObject {
         const double dt = session.world().params.dt;
         const Vec3 corner = session.world().sheet.verts.x[0];
         const auto before = session.world().sheet.verts.x;
-        QVERIFY(!session.grab(corner + Vec3(0.001, 0.0, 0.001), true));
+        QVERIFY(!session.grab(corner + Vec3(0.001, 0.0, 0.001), true, true));
         QCOMPARE(session.grabbedVertex(), Index(0));
         QVERIFY(session.world().sheet.verts.pinned[0]);
         const Vec3 target = corner + Vec3(0.02, 0.08, 0.0);
-        session.grab(target, true);
+        session.grab(target, true, false);
         session.advance(1);
         QVERIFY((session.world().sheet.verts.x[0] - corner).norm() <=
                 EditSession::kMaxToolSpeed * dt * (1 + 1e-12));
@@ -439,7 +439,7 @@ class TestEditSession : public QObject {
         Index lifted = 0;
         for (Index i = 1; i < V.size(); ++i) lifted += V.x[i].y() > 0.02 ? 1 : 0;
         QVERIFY(lifted > 0);
-        const auto ended = session.grab(target, false);
+        const auto ended = session.grab(target, false, false);
         QVERIFY(ended);
         QCOMPARE(ended->kind, EditSession::StrokeKind::Grab);
         QVERIFY(!session.grabbing());
@@ -458,8 +458,8 @@ class TestEditSession : public QObject {
     void aGrabNeverPullsThePaperBelowTheDesk() {
         EditSession session(*makeScene("press"));
         const Vec3 corner = session.world().sheet.verts.x[0];
-        session.grab(corner, true);
-        session.grab(corner - Vec3(0.0, 0.2, 0.0), true);
+        session.grab(corner, true, true);
+        session.grab(corner - Vec3(0.0, 0.2, 0.0), true, false);
         session.advance(240);
         QVERIFY(session.world().sheet.verts.x[0].y() >= session.world().groundHeight);
     }
@@ -468,14 +468,80 @@ class TestEditSession : public QObject {
         EditSession session(*makeScene("press"));
         const Vec3 corner = session.world().sheet.verts.x[0];
         QVERIFY(session.pin(corner, 1e-4));
-        session.grab(corner, true);
+        session.grab(corner, true, true);
         QVERIFY(session.grabbing());
         QVERIFY(session.grabbedVertex() != 0); // the pin holds: its neighbour is taken
-        session.grab(corner, false);
+        session.grab(corner, false, false);
         const double radius = session.world().sphere.radius;
         session.setTool(corner + Vec3(0, radius, 0), radius, true, true);
-        session.grab(corner, true);
+        session.grab(corner, true, true);
         QVERIFY(!session.grabbing()); // one stroke at a time
+    }
+
+    // An undo lets a held grab go; moves of the hand that still holds nothing do not pick
+    // up whatever is nearest, and the saved world has no pin where the hand held.
+    void anUndoLetsAGrabGoAndOnlyABeginPicksUp() {
+        EditSession session(*makeScene("press"));
+        const Vec3 corner = session.world().sheet.verts.x[0];
+        const auto pinned = session.pin(session.world().sheet.verts.x[5], 1e-4);
+        QVERIFY(pinned);
+        session.grab(corner, true, true);
+        session.grab(corner + Vec3(0, 0.05, 0), true, false);
+        session.advance(30);
+        QVERIFY(session.grabbing());
+        QVERIFY(!session.worldToSave().sheet.verts.pinned[0]);
+        QVERIFY(session.worldToSave().sheet.verts.pinned[5]);
+        QVERIFY(session.world().sheet.verts.pinned[0]);
+        session.undoStroke(pinned->stroke);
+        QVERIFY(!session.grabbing());
+        QVERIFY(!session.world().sheet.verts.pinned[0]);
+        session.grab(corner + Vec3(0, 0.06, 0), true, false);
+        QVERIFY(!session.grabbing());
+        QVERIFY(!session.grab(corner + Vec3(0, 0.06, 0), false, false));
+    }
+
+    // Unpinning wakes a sleeping sheet. (A hanging xpbd sheet swings for minutes with no
+    // air to stop it, so the sleeping sheet here lies on the desk, pinned, and the desk
+    // is then taken away under it without waking it: only the unpin can.)
+    void unpinningWakesASleepingSheet() {
+        World w = *makeScene("press");
+        w.params.integrator = "xpbd";
+        EditSession session(w);
+        const auto& V = session.world().sheet.verts;
+        const Vec3 corner = V.x[0];
+        QVERIFY(session.pin(corner, 0.02));
+        for (int steps = 0; !session.simulation().asleep() && steps < 2400; steps += 10)
+            session.advance(10);
+        QVERIFY2(session.simulation().asleep(), "the sheet on the desk never came to rest");
+        session.simulation().world().groundEnabled = false;
+        const double before = V.x.back().y();
+        session.advance(24);
+        QCOMPARE(V.x.back().y(), before); // still asleep: nothing woke it
+        const auto freed = session.pin(corner, 0.02);
+        QVERIFY(freed);
+        QCOMPARE(freed->kind, EditSession::StrokeKind::Unpin);
+        session.advance(24);
+        QVERIFY2(V.x.back().y() < before - 1e-3, "the unpinned sheet did not fall");
+    }
+
+    // A script's pinned vertex that the user freed and then grabs follows the hand, not
+    // the script.
+    void aGrabbedScriptVertexFollowsTheHand() {
+        EditSession session(*makeScene("drape"));
+        const auto& V = session.world().sheet.verts;
+        Index scripted = kNone;
+        for (Index i = 0; i < V.size() && scripted == kNone; ++i)
+            if (V.pinned[i]) scripted = i;
+        QVERIFY(scripted != kNone);
+        const Vec3 at = V.x[scripted];
+        QVERIFY(session.pin(at, 1e-5));
+        QVERIFY(!V.pinned[scripted]);
+        session.grab(at, true, true);
+        QCOMPARE(session.grabbedVertex(), scripted);
+        const Vec3 target = at + Vec3(0.03, 0.02, 0.01);
+        session.grab(target, true, false);
+        session.advance(120);
+        QVERIFY((V.x[scripted] - target).norm() < 1e-6);
     }
 
     // Pin: the vertices around the click stand still while the rest falls; a second click
@@ -532,12 +598,12 @@ class TestEditSession : public QObject {
         const Vec3 b = session.world().sheet.verts.x[session.world().sheet.verts.size() - 1];
         session.pin(b, 0.02);
         session.advance(10);
-        session.grab(a, true);
+        session.grab(a, true, true);
         for (int k = 0; k < 30; ++k) {
-            session.grab(a + Vec3(0.003 * k, 0.004 * k, 0.0), true);
+            session.grab(a + Vec3(0.003 * k, 0.004 * k, 0.0), true, false);
             session.advance(4);
         }
-        const auto grabbed = session.grab(a + Vec3(0.09, 0.12, 0.0), false);
+        const auto grabbed = session.grab(a + Vec3(0.09, 0.12, 0.0), false, false);
         QVERIFY(grabbed);
         session.advance(60);
         session.undoStroke(grabbed->stroke);

@@ -18,15 +18,19 @@
 #include <QComboBox>
 #include <QDateTime>
 #include <QDialog>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QGroupBox>
 #include <QLabel>
+#include <QMenu>
 #include <QMenuBar>
 #include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -90,6 +94,38 @@ std::optional<PickHit> pickAt(MainWindow& w, const QPoint& p) {
     const Viewport* v = w.viewport();
     return pickSheet(*v->snapshot(), v->camera().rayThroughPixel(p.x() + 0.5, p.y() + 0.5,
                                                                  v->width(), v->height()));
+}
+
+// Every text the window shows a user, in a fixed order: actions (text and tooltip),
+// menus, labels, buttons, group boxes and docks.
+QStringList shownTexts(MainWindow& w) {
+    QStringList out;
+    for (QAction* a : w.findChildren<QAction*>()) {
+        // Unnamed actions carry data (File ▸ Open Recent's paths) or repeat a dock's title.
+        if (a->isSeparator() || a->menu() || a->objectName().isEmpty()) continue;
+        out << QString(a->text()).remove(QLatin1Char('&')) << a->toolTip();
+    }
+    for (QMenu* m : w.findChildren<QMenu*>()) out << QString(m->title()).remove(QLatin1Char('&'));
+    for (QLabel* l : w.findChildren<QLabel*>()) out << l->text() << l->toolTip();
+    for (QAbstractButton* b : w.findChildren<QAbstractButton*>())
+        if (!qobject_cast<QToolButton*>(b)) out << b->text() << b->toolTip();
+    for (QGroupBox* g : w.findChildren<QGroupBox*>()) out << g->title();
+    for (QDockWidget* d : w.findChildren<QDockWidget*>()) out << d->windowTitle();
+    return out;
+}
+
+// Labels whose text does not fit the room they were given: a one-line label narrower
+// than its text, a wrapped one lower than its lines.
+QStringList clippedLabels(MainWindow& w) {
+    QStringList out;
+    for (QLabel* l : w.findChildren<QLabel*>()) {
+        if (!l->isVisible() || l->text().isEmpty()) continue;
+        const bool fits = l->wordWrap() ? l->height() >= l->heightForWidth(l->width())
+                                        : l->width() >= l->minimumSizeHint().width();
+        if (!fits)
+            out << QStringLiteral("'%1' (%2x%3)").arg(l->text()).arg(l->width()).arg(l->height());
+    }
+    return out;
 }
 
 } // namespace
@@ -361,6 +397,46 @@ class TestEditor : public QObject {
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("&File"));
     }
 
+    // In every language each text the window shows is translated (differs from the
+    // English one, but for names that are the same in both) and every label fits.
+    void everyTextIsTranslatedAndFitsInEachLanguage_data() {
+        QTest::addColumn<QString>("language");
+        for (const char* l : {"de", "ja", "ko"}) QTest::newRow(l) << QString::fromLatin1(l);
+    }
+    void everyTextIsTranslatedAndFitsInEachLanguage() {
+        QFETCH(QString, language);
+        window->panel()->findChild<QGroupBox*>()->setChecked(true); // Advanced open
+        settledStatus(*window);
+        QTest::qWait(50);
+        QCOMPARE(clippedLabels(*window), QStringList());
+        const QStringList english = shownTexts(*window);
+        QVERIFY(installLanguage(language));
+        settledStatus(*window); // the status bar too
+        QTest::qWait(50);
+        const QStringList translated = shownTexts(*window);
+        QVERIFY(installLanguage(QStringLiteral("en")));
+        QCOMPARE(translated.size(), english.size());
+        // The same in every language: names, numbers, units.
+        static const QSet<QString> same = {
+            QStringLiteral("PaperFold"), QStringLiteral("English"),
+            QStringLiteral("Deutsch"),   QStringLiteral("日本語"),
+            QStringLiteral("한국어"),    QStringLiteral("Integrator"),
+            QStringLiteral("jacobi"),    QStringLiteral("office"),
+            QStringLiteral("Simulation")}; // German too
+        QStringList untranslated;
+        for (qsizetype i = 0; i < english.size(); ++i) {
+            const QString& e = english[i];
+            const bool words = e.contains(QRegularExpression(QStringLiteral("[A-Za-z]{3,}")));
+            const bool unit = e.contains(QRegularExpression(QStringLiteral("^[0-9]+ fps$")));
+            if (words && e == translated[i] && !same.contains(e) && !unit) untranslated << e;
+        }
+        QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join(QStringLiteral(" | "))));
+        QVERIFY(installLanguage(language));
+        QTest::qWait(50);
+        QCOMPARE(clippedLabels(*window), QStringList());
+        QVERIFY(installLanguage(QStringLiteral("en")));
+    }
+
     void solverDockChoosesTheIntegratorAndShowsLiveStrain() {
         SolverPanel* solver = window->solverPanel();
         solver->integratorBox()->setCurrentText(QStringLiteral("jacobi-scalar"));
@@ -433,6 +509,46 @@ class TestEditor : public QObject {
         QCOMPARE(window->undoStack()->count(), 1);
         window->simulation()->sync();
         QCOMPARE(worldOf(*window)->params.phi, 0.10);
+    }
+
+    // The first-run hint shows until the first thing done in the view, and not again.
+    void theFirstRunHintGoesAfterTheFirstAction() {
+        window.reset();
+        QSettings().remove(QLatin1String(MainWindow::kHintSetting));
+        makeWindow();
+        Viewport* view = window->viewport();
+        QVERIFY(view->hint().contains(QStringLiteral("Left drag")));
+        const QPoint p = viewportCentre(*window);
+        QTest::mousePress(view, Qt::RightButton, {}, p);
+        QTest::mouseRelease(view, Qt::RightButton, {}, p);
+        QVERIFY(view->hint().isEmpty());
+        window.reset();
+        makeWindow();
+        QVERIFY(window->viewport()->hint().isEmpty());
+    }
+
+    // Parameters ▸ Push depth: a pressed sphere reaches that share of its radius into the
+    // paper under the cursor (60 % by default).
+    void thePushDepthSetsHowDeepAPressReaches() {
+        Viewport* view = window->viewport();
+        const QPoint p = viewportCentre(*window) + QPoint(20, 10);
+        const auto hit = pickAt(*window, p);
+        QVERIFY(hit && hit->onSheet);
+        const double r = ViewportInput::kDefaultToolRadius;
+        auto pressedDepth = [&] {
+            moveMouse(view, p);
+            QTest::mousePress(view, Qt::LeftButton, {}, p);
+            const double depth = r - (window->toolTarget() - hit->point).dot(hit->normal);
+            QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+            return depth;
+        };
+        QVERIFY(std::abs(pressedDepth() - 0.6 * r) < 1e-9);
+        QDoubleSpinBox* spin = window->panel()->pushDepthSpin();
+        spin->setFocus();
+        spin->selectAll();
+        QTest::keyClicks(spin, QStringLiteral("95"));
+        QTest::keyClick(spin, Qt::Key_Return);
+        QVERIFY(std::abs(pressedDepth() - 0.95 * r) < 1e-9);
     }
 
     void sigmaHasTheSameRangeAsTheCommandLine() {
@@ -536,10 +652,15 @@ class TestEditor : public QObject {
         }
         for (int s = 0; s < 240; ++s) window->simulation()->stepOnce();
         auto held = worldOf(*window);
-        Index grabbed = kNone;
-        for (Index i = 0; i < held->sheet.verts.size(); ++i)
-            if (held->sheet.verts.pinned[i]) grabbed = i;
-        QVERIFY(grabbed != kNone);
+        // The vertex picked up is the one nearest the picked point; a copy to save does
+        // not keep it pinned (the hand holds it).
+        Index grabbed = 0;
+        for (Index i = 0; i < before->sheet.verts.size(); ++i)
+            if ((before->sheet.verts.x[i] - hit->point).norm() <
+                (before->sheet.verts.x[grabbed] - hit->point).norm())
+                grabbed = i;
+        QCOMPARE(std::count(held->sheet.verts.pinned.begin(), held->sheet.verts.pinned.end(), 1),
+                 std::ptrdiff_t(0));
         auto onCursor = [&](const Vec3& x, double wantDepth) {
             const auto ray =
                 cam.rayThroughPixel(p.x() + 0.5, p.y() + 0.5, view->width(), view->height());
@@ -619,12 +740,17 @@ class TestEditor : public QObject {
         const auto loaded = loadWorld(path);
         QVERIFY2(loaded.world, qPrintable(loaded.error));
         QCOMPARE(loaded.world->sheet.verts.pinned, later->sheet.verts.pinned);
-        // A second click on the pin frees the paper; undo pins it again, undo again frees it.
+        settledStatus(*window);
+        QTRY_VERIFY(!window->isWindowModified());
+        // A second click on the pin frees the paper (the sheet differs from its file now,
+        // though nothing moved); undo pins it again, undo again frees it.
         const QPoint onPin = p;
         window->simulation()->sync();
         QTRY_VERIFY(window->viewport()->snapshot()->step == later->stepCount);
         QTest::mouseClick(view, Qt::LeftButton, {}, onPin);
         QVERIFY(waitForCount(recorded, 2));
+        settledStatus(*window);
+        QTRY_VERIFY(window->isWindowModified());
         QTRY_COMPARE(window->undoStack()->count(), 2);
         QVERIFY(window->undoStack()->undoText().startsWith(QStringLiteral("Unpin")));
         auto pinCount = [this] {

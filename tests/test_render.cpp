@@ -183,6 +183,32 @@ class TestRender : public QObject {
         QVERIFY(qGray(centre) > qGray(corner) + 30);
     }
 
+    // Pins are marked in pin red where the options ask for them (the editor), and not
+    // otherwise (headless renders and exported images).
+    void pinsAreMarkedOnlyWhenAsked() {
+        test::RenderCase c = test::renderCases()[0];
+        c.steps = 0;
+        c.view = "top";
+        SheetSnapshot snap = test::snapshotFor(c);
+        for (Index i = 0; i < Index(snap.x.size()); i += 37) snap.pinned.push_back(i);
+        const OrbitCamera camera = test::cameraFor(c, snap, double(kWidth) / kHeight);
+        RenderOptions options = test::optionsFor(c);
+        auto redPixels = [](const QImage& image) {
+            int n = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor p = image.pixelColor(x, y);
+                    n += p.red() > 150 && p.green() < 90 && p.blue() < 110 ? 1 : 0;
+                }
+            return n;
+        };
+        options.pins = false;
+        QCOMPARE(redPixels(renderer->render(snap, camera, options)), 0);
+        options.pins = true;
+        const int marked = redPixels(renderer->render(snap, camera, options));
+        QVERIFY2(marked > 5 * int(snap.pinned.size()), qPrintable(QString::number(marked)));
+    }
+
     void overlayNamesParse() {
         QString error;
         QCOMPARE(overlaysFromNames(QStringLiteral("springs,strain"), &error).value(),

@@ -465,6 +465,14 @@
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
+    <message>
+        <source>Left drag pushes the paper · G grabs and I pins (Tools menu) · right drag orbits · the wheel zooms · F1 lists every key</source>
+        <translation>Linke Maustaste ziehen drückt das Papier · G greift, I heftet an (Menü Werkzeuge) · rechte Maustaste ziehen dreht die Ansicht · Mausrad zoomt · F1 zeigt alle Tasten</translation>
+    </message>
+    <message>
+        <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
+        <translation>Angehalten: Das Greifen wirkt, sobald die Simulation läuft (Leertaste oder Schritt).</translation>
+    </message>
 </context>
 <context>
     <name>pf::ParameterPanel</name>
@@ -531,6 +539,14 @@
     <message>
         <source>Resolution and size apply to the next New or Reset.</source>
         <translation>Auflösung und Größe gelten beim nächsten Neu oder Zurücksetzen.</translation>
+    </message>
+    <message>
+        <source>Push depth</source>
+        <translation>Drucktiefe</translation>
+    </message>
+    <message>
+        <source>How deep a push presses the sphere into the paper, as a share of its radius: deeper pushes crease harder.</source>
+        <translation>Wie tief ein Druck die Kugel ins Papier drückt, als Anteil ihres Radius: tiefere Drucke falten stärker.</translation>
     </message>
 </context>
 <context>

@@ -461,6 +461,14 @@
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
+    <message>
+        <source>Left drag pushes the paper · G grabs and I pins (Tools menu) · right drag orbits · the wheel zooms · F1 lists every key</source>
+        <translation>左ドラッグで紙を押す・G でつかむ、I でピン留め（ツールメニュー）・右ドラッグで回転・ホイールでズーム・F1 ですべてのキー</translation>
+    </message>
+    <message>
+        <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
+        <translation>一時停止中：つかむ操作はシミュレーションの再生後に反映されます（Space またはステップ）。</translation>
+    </message>
 </context>
 <context>
     <name>pf::ParameterPanel</name>
@@ -527,6 +535,14 @@
     <message>
         <source>Resolution and size apply to the next New or Reset.</source>
         <translation>解像度と大きさは次の「新規」または「リセット」で反映されます。</translation>
+    </message>
+    <message>
+        <source>Push depth</source>
+        <translation>押し込みの深さ</translation>
+    </message>
+    <message>
+        <source>How deep a push presses the sphere into the paper, as a share of its radius: deeper pushes crease harder.</source>
+        <translation>押したときに球を紙へどれだけ深く押し込むか（半径に対する割合）。深いほど強く折り目がつきます。</translation>
     </message>
 </context>
 <context>

@@ -461,6 +461,14 @@
         <source>&amp;Tools</source>
         <translation>도구(&amp;T)</translation>
     </message>
+    <message>
+        <source>Left drag pushes the paper · G grabs and I pins (Tools menu) · right drag orbits · the wheel zooms · F1 lists every key</source>
+        <translation>왼쪽 드래그로 종이 누르기 · G 잡기, I 고정 (도구 메뉴) · 오른쪽 드래그로 회전 · 휠로 확대/축소 · F1 모든 키 보기</translation>
+    </message>
+    <message>
+        <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
+        <translation>일시 정지됨: 잡기는 시뮬레이션이 재생되면 적용됩니다 (Space 또는 한 단계).</translation>
+    </message>
 </context>
 <context>
     <name>pf::ParameterPanel</name>
@@ -527,6 +535,14 @@
     <message>
         <source>Resolution and size apply to the next New or Reset.</source>
         <translation>해상도와 크기는 다음 새로 만들기나 초기화 때 적용됩니다.</translation>
+    </message>
+    <message>
+        <source>Push depth</source>
+        <translation>누르는 깊이</translation>
+    </message>
+    <message>
+        <source>How deep a push presses the sphere into the paper, as a share of its radius: deeper pushes crease harder.</source>
+        <translation>누를 때 구를 종이에 얼마나 깊이 눌러 넣을지, 반지름에 대한 비율입니다. 깊을수록 더 강하게 접힙니다.</translation>
     </message>
 </context>
 <context>

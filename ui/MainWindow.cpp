@@ -114,11 +114,32 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(charts_, &ChartBrowser::failed, this, [this](const QString& m) { showError(m); });
     connect(panel_, &ParameterPanel::toolRadiusChanged, input_, &ViewportInput::setToolRadius);
     connect(input_, &ViewportInput::toolRadiusChanged, panel_, &ParameterPanel::setToolRadius);
+    connect(panel_, &ParameterPanel::pushDepthChanged, input_, &ViewportInput::setPushDepth);
+    hintShown_ = !QSettings().value(QLatin1String(kHintSetting)).toBool();
+    connect(input_, &ViewportInput::acted, this, [this] {
+        if (!hintShown_) return;
+        hintShown_ = false;
+        viewport_->setHint(QString());
+        QSettings().setValue(QLatin1String(kHintSetting), true);
+    });
     connect(input_, &ViewportInput::strokeBegan, this, [this] {
-        if (!playing_)
+        if (playing_) return;
+        switch (input_->tool()) {
+        case ViewportInput::Tool::Push:
             statusBar()->showMessage(
                 tr("Paused: the push acts once the simulation plays (Space or Step)."), 5000);
+            break;
+        case ViewportInput::Tool::Grab:
+            statusBar()->showMessage(
+                tr("Paused: the grab acts once the simulation plays (Space or Step)."), 5000);
+            break;
+        case ViewportInput::Tool::Pin:
+            break; // a pin holds at once
+        }
     });
+    // An undo or redo lets go of a held grab (EditSession); the hand follows.
+    connect(sim_.get(), &SimulationThread::strokeUndone, input_, &ViewportInput::letGo);
+    connect(sim_.get(), &SimulationThread::strokeRedone, input_, &ViewportInput::letGo);
 
     retranslate();
     QSettings settings;
@@ -390,6 +411,10 @@ void MainWindow::retranslate() {
     historyDock_->setWindowTitle(tr("History"));
     solverDock_->setWindowTitle(tr("Solver"));
     undoView_->setEmptyLabel(tr("<new sheet>"));
+    if (hintShown_)
+        viewport_->setHint(
+            tr("Left drag pushes the paper · G grabs and I pins (Tools menu) · right "
+               "drag orbits · the wheel zooms · F1 lists every key"));
     updateTitle();
 }
 
@@ -448,7 +473,7 @@ bool MainWindow::openFile(const QString& path) {
         return false;
     }
     parameters_->set(load.world->params);
-    savedHash_ = lastHash_ = stateHash(load.world->sheet);
+    savedHash_ = lastHash_ = editedStateHash(load.world->sheet);
     savedParams_ = load.world->params;
     sim_->replaceWorld(*load.world);
     scene_ = QString::fromStdString(load.world->scene);
@@ -480,7 +505,7 @@ bool MainWindow::saveFile(const QString& path) {
         return false;
     }
     file_ = path;
-    savedHash_ = lastHash_ = stateHash(world.sheet);
+    savedHash_ = lastHash_ = editedStateHash(world.sheet);
     savedParams_ = world.params;
     undo_->setClean();
     recent_->add(path);

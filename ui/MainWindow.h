@@ -39,6 +39,8 @@ class MainWindow : public QMainWindow {
     Q_OBJECT
 
   public:
+    // QSettings key: true once the first-run hint was dismissed.
+    static constexpr const char* kHintSetting = "hints/firstRunDone";
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
@@ -117,6 +119,9 @@ class MainWindow : public QMainWindow {
     // drawn hands the freed heap back to the system.
     bool releasePending_ = false;
     bool playing_ = true;
+    // The first-run hint is up until the first thing done in the view (QSettings
+    // remembers that it went).
+    bool hintShown_ = false;
 };
 
 } // namespace pf

@@ -20,6 +20,9 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     psi_ = addSliderRow(grid, 1, 0.0, 1.0, 2, 100.0);
     sigma_ = addSliderRow(grid, 2, 0.0, 4.0, 2, 100.0);  // the CLI's and the file's range
     radius_ = addSliderRow(grid, 3, 1.0, 10.0, 1, 10.0); // centimetres
+    depth_ = addSliderRow(grid, 4, 10.0, 100.0, 0, 1.0); // per cent of the radius
+    depth_.spin->setValue(60.0);
+    depth_.slider->setValue(60);
 
     advanced_ = new QGroupBox(this);
     advanced_->setCheckable(true);
@@ -66,6 +69,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     for (QWidget* w : advanced_->findChildren<QWidget*>()) w->setVisible(false);
     connect(advanced_, &QGroupBox::toggled, this, [this](bool on) {
         for (QWidget* w : advanced_->findChildren<QWidget*>()) w->setVisible(on);
+        fitNote();
     });
     layout->addWidget(advanced_);
     layout->addStretch();
@@ -139,9 +143,12 @@ void ParameterPanel::rowEdited(int row, double value) {
     case 2:
         emitEdit(QStringLiteral("sigma"), [value](SimParams& p) { p.sigma = value; });
         break;
+    case 3:
+        emit toolRadiusChanged(value / 100.0); // the row is in centimetres
+        break;
     default:
-        emit toolRadiusChanged(value / 100.0);
-        break; // the row is in centimetres
+        emit pushDepthChanged(value / 100.0); // in per cent
+        break;
     }
 }
 
@@ -184,6 +191,19 @@ double ParameterPanel::sheetLength() const {
     return length_->value() / 100.0;
 }
 
+void ParameterPanel::fitNote() {
+    // A dock sizes its widget from size hints, which for a word-wrapped label assume a
+    // line wider than the dock: the note was cut off. Its minimum height is the height
+    // it needs at the width it has, so the dock can only squeeze what is below.
+    const int need = sheetNote_->isVisible() ? sheetNote_->heightForWidth(sheetNote_->width()) : 0;
+    if (need != sheetNote_->minimumHeight()) sheetNote_->setMinimumHeight(need);
+}
+
+void ParameterPanel::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    fitNote();
+}
+
 void ParameterPanel::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) retranslate();
     QWidget::changeEvent(event);
@@ -208,7 +228,11 @@ void ParameterPanel::retranslate() {
     radius_.label->setToolTip(
         tr("Radius of the sphere you push the paper with (Ctrl+wheel in the view)."));
     radius_.spin->setSuffix(tr(" cm"));
-    for (auto* row : {&phi_, &psi_, &sigma_, &radius_}) {
+    depth_.label->setText(tr("Push depth"));
+    depth_.label->setToolTip(tr("How deep a push presses the sphere into the paper, as a share of "
+                                "its radius: deeper pushes crease harder."));
+    depth_.spin->setSuffix(QStringLiteral(" %"));
+    for (auto* row : {&phi_, &psi_, &sigma_, &radius_, &depth_}) {
         row->slider->setToolTip(row->label->toolTip());
         row->spin->setToolTip(row->label->toolTip());
     }
@@ -219,6 +243,7 @@ void ParameterPanel::retranslate() {
     resolution_->setToolTip(tr("Vertices along the sheet's short side."));
     sizeLabel_->setText(tr("Sheet size"));
     sheetNote_->setText(tr("Resolution and size apply to the next New or Reset."));
+    fitNote();
 }
 
 } // namespace pf

@@ -34,17 +34,21 @@ class ParameterPanel : public QWidget {
     QSlider* psiSlider() const { return psi_.slider; }
     QSlider* sigmaSlider() const { return sigma_.slider; }
     QDoubleSpinBox* phiSpin() const { return phi_.spin; }
+    QDoubleSpinBox* pushDepthSpin() const { return depth_.spin; }
 
   signals:
     // A user edit of the parameter `what`. `drag` numbers a slider drag: edits with the
     // same drag number belong to one gesture (and one undo step).
     void edited(const QString& what, int drag, const pf::ParamChange& change);
     void toolRadiusChanged(double metres);
+    void pushDepthChanged(double shareOfRadius);
 
   protected:
     void changeEvent(QEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
   private:
+    void fitNote();
     struct SliderRow {
         QLabel* label = nullptr;
         QSlider* slider = nullptr;
@@ -57,7 +61,7 @@ class ParameterPanel : public QWidget {
     void emitEdit(const QString& what, const ParamChange& change);
     void rowEdited(int row, double value);
 
-    SliderRow phi_, psi_, sigma_, radius_;
+    SliderRow phi_, psi_, sigma_, radius_, depth_;
     QGroupBox* advanced_ = nullptr;
     QLabel *stiffnessLabel_ = nullptr, *bendingLabel_ = nullptr, *resolutionLabel_ = nullptr,
            *sizeLabel_ = nullptr;

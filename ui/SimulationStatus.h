@@ -11,7 +11,7 @@ struct SimulationStatus {
     int vertices = 0, springs = 0, breaks = 0, hinges = 0;
     double maxStrain = 0.0, rmsStrain = 0.0; // |l/l0 - 1| over structural springs
     bool playing = false;
-    std::uint64_t sheetHash = 0; // stateHash of the sheet: tells whether it differs from a file
+    std::uint64_t sheetHash = 0; // editedStateHash: tells whether it differs from a file
 };
 
 } // namespace pf

@@ -106,8 +106,8 @@ void SimulationThread::replaceWorld(const World& world) {
 void SimulationThread::setTool(const Vec3& target, double radius, bool visible, bool pressed) {
     PF_POST(setTool(target, radius, visible, pressed));
 }
-void SimulationThread::grab(const Vec3& target, bool held) {
-    PF_POST(grab(target, held));
+void SimulationThread::grab(const Vec3& target, bool held, bool begin) {
+    PF_POST(grab(target, held, begin));
 }
 void SimulationThread::pin(const Vec3& point, double radius) {
     PF_POST(pin(point, radius));
@@ -148,7 +148,7 @@ void SimulationThread::sync() {
 
 World SimulationThread::copyWorld() {
     World copy;
-    callOnWorker([&](SimulationWorker& w) { copy = w.session().world(); });
+    callOnWorker([&](SimulationWorker& w) { copy = w.session().worldToSave(); });
     return copy;
 }
 

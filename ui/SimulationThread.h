@@ -43,7 +43,7 @@ class SimulationThread : public QObject {
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
     // The grab tool: pulls the sheet's vertex nearest to where the grab began toward
     // `target` while held (EditSession::grab).
-    void grab(const Vec3& target, bool held);
+    void grab(const Vec3& target, bool held, bool begin);
     // The pin tool: toggles the pins within `radius` of `point` (EditSession::pin).
     void pin(const Vec3& point, double radius);
     void undoStroke(int stroke);

@@ -59,8 +59,8 @@ void SimulationWorker::setTool(const Vec3& target, double radius, bool visible, 
     announce(session_.setTool(target, radius, visible, pressed));
 }
 
-void SimulationWorker::grab(const Vec3& target, bool held) {
-    announce(session_.grab(target, held));
+void SimulationWorker::grab(const Vec3& target, bool held, bool begin) {
+    announce(session_.grab(target, held, begin));
 }
 
 void SimulationWorker::pin(const Vec3& point, double radius) {
@@ -125,7 +125,7 @@ void SimulationWorker::publish(double stepSeconds) {
     st.maxStrain = stats.maxStrain;
     st.rmsStrain = stats.rmsStrain;
     st.playing = playing_;
-    st.sheetHash = stateHash(w.sheet);
+    st.sheetHash = editedStateHash(w.sheet);
     emit published(std::make_shared<const SheetSnapshot>(makeSnapshot(session_.simulation())), st);
 }
 

@@ -30,7 +30,7 @@ class SimulationWorker : public QObject {
     void setParams(const SimParams& params);
     void replaceWorld(const World& world);
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
-    void grab(const Vec3& target, bool held);
+    void grab(const Vec3& target, bool held, bool begin);
     void pin(const Vec3& point, double radius);
     void undoStroke(int stroke);
     void redoStroke(int stroke);

@@ -25,9 +25,29 @@ class Viewport::Overlay : public QWidget {
         if (!view_->glError_.isEmpty()) {
             painter.fillRect(rect(), palette().window());
             painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, view_->glError_);
-        } else if (view_->options_.legend && view_->options_.overlays) {
-            drawLegend(painter, rect(), view_->options_);
+            return;
         }
+        if (view_->options_.legend && view_->options_.overlays)
+            drawLegend(painter, rect(), view_->options_);
+        if (!view_->hint_.isEmpty()) drawHint(painter);
+    }
+
+  private:
+    // A dark rounded box, bottom centre, wrapped to at most 80 % of the view's width.
+    void drawHint(QPainter& painter) {
+        const int margin = 12, pad = 8;
+        const int maxWidth = std::max(80, width() * 8 / 10);
+        const int flags = Qt::AlignCenter | Qt::TextWordWrap;
+        const QRect text = painter.fontMetrics().boundingRect(QRect(0, 0, maxWidth, height()),
+                                                              flags, view_->hint_);
+        QRect box(0, 0, text.width() + 2 * pad, text.height() + 2 * pad);
+        box.moveCenter(QPoint(width() / 2, height() - margin - box.height() / 2));
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(QColor(20, 20, 24, 190));
+        painter.drawRoundedRect(box, 6, 6);
+        painter.setPen(Qt::white);
+        painter.drawText(box.adjusted(pad, pad, -pad, -pad), flags, view_->hint_);
     }
 
   private:
@@ -78,6 +98,11 @@ void Viewport::setSnapshot(std::shared_ptr<const SheetSnapshot> snapshot) {
 void Viewport::setCamera(const OrbitCamera& camera) {
     camera_ = camera;
     update();
+}
+
+void Viewport::setHint(const QString& hint) {
+    hint_ = hint;
+    overlay_->update();
 }
 
 void Viewport::setRenderOptions(const RenderOptions& options) {

@@ -35,6 +35,10 @@ class Viewport : public QOpenGLWidget {
     void setRenderOptions(const RenderOptions& options);
     const RenderOptions& renderOptions() const { return options_; }
 
+    // A line of help shown at the bottom of the view (the first-run hint); empty hides it.
+    void setHint(const QString& hint);
+    const QString& hint() const { return hint_; }
+
     // Empty if GL came up; otherwise why not.
     QString glError() const { return glError_; }
     // Seconds the last paintGL took.
@@ -53,7 +57,7 @@ class Viewport : public QOpenGLWidget {
   private:
     void releaseGl();
     class Overlay;
-    Overlay* overlay_ = nullptr; // the legend and GL errors, painted by a child widget
+    Overlay* overlay_ = nullptr; // the legend, the hint and GL errors, painted by a child widget
 
     GlFunctions gl_;
     SheetRenderer renderer_;
@@ -61,6 +65,7 @@ class Viewport : public QOpenGLWidget {
     OrbitCamera camera_;
     RenderOptions options_;
     QString glError_;
+    QString hint_;
     double lastFrameSeconds_ = 0.0;
 };
 

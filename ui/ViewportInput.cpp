@@ -24,7 +24,7 @@ void ViewportInput::setToolRadius(double radius) {
 
 void ViewportInput::setTool(Tool tool) {
     if (tool == tool_) return;
-    if (grabbing_) useGrab(grabPixel_, false); // let go of what is held
+    if (grabbing_) useGrab(grabPixel_, false, false); // let go of what is held
     tool_ = tool;
     hideTool();
     switch (tool) {
@@ -71,7 +71,7 @@ void ViewportInput::setView(const char* name) {
 void ViewportInput::pointTool(const QPoint& pixel, bool pressed) {
     const auto hit = pick(pixel);
     if (!hit) return;
-    toolTarget_ = toolCenter(*hit, toolRadius_, pressed ? kPushDepth * toolRadius_ : 0.0);
+    toolTarget_ = toolCenter(*hit, toolRadius_, pressed ? pushDepth_ * toolRadius_ : 0.0);
     const bool began = pressed && !toolPressed_;
     toolPressed_ = pressed;
     toolShown_ = true;
@@ -79,16 +79,22 @@ void ViewportInput::pointTool(const QPoint& pixel, bool pressed) {
     if (began) emit strokeBegan();
 }
 
-void ViewportInput::useGrab(const QPoint& pixel, bool held) {
+void ViewportInput::letGo() {
+    if (!grabbing_) return;
+    grabbing_ = false;
+    viewport_->setCursor(Qt::OpenHandCursor);
+}
+
+void ViewportInput::useGrab(const QPoint& pixel, bool held, bool press) {
     if (!grabbing_) {
-        if (!held) return;
+        if (!held || !press) return;
         const auto hit = pick(pixel);
         if (!hit || !hit->onSheet) return;
         grabbing_ = true;
         grabPoint_ = hit->point;
         grabPixel_ = pixel;
         viewport_->setCursor(Qt::ClosedHandCursor);
-        sim_->grab(grabPoint_, true);
+        sim_->grab(grabPoint_, true, true);
         emit strokeBegan();
         return;
     }
@@ -101,7 +107,7 @@ void ViewportInput::useGrab(const QPoint& pixel, bool held) {
     Vec3 target = grabPoint_;
     if (std::abs(along) > 1e-9)
         target = ray.origin + ray.direction * ((grabPoint_ - ray.origin).dot(facing) / along);
-    sim_->grab(target, held);
+    sim_->grab(target, held, false);
     if (held) return;
     grabbing_ = false;
     viewport_->setCursor(Qt::OpenHandCursor);
@@ -161,6 +167,7 @@ bool ViewportInput::orbitPanOrZoom(QEvent* event) {
 
 bool ViewportInput::eventFilter(QObject* watched, QEvent* event) {
     if (watched != viewport_) return false;
+    if (event->type() == QEvent::MouseButtonPress || event->type() == QEvent::Wheel) emit acted();
     switch (event->type()) {
     case QEvent::MouseButtonPress:
     case QEvent::MouseMove:
@@ -191,7 +198,7 @@ bool ViewportInput::eventFilter(QObject* watched, QEvent* event) {
             pointTool(pos, left);
             break;
         case Tool::Grab:
-            useGrab(pos, left);
+            useGrab(pos, left, event->type() == QEvent::MouseButtonPress);
             break;
         case Tool::Pin:
             usePin(pos, left);
@@ -206,7 +213,7 @@ bool ViewportInput::eventFilter(QObject* watched, QEvent* event) {
             const OrbitCamera& c = viewport_->camera();
             const Vec3 toEye = (c.eye() - c.target).normalized();
             grabPoint_ += toEye * (kGrabWheelStep * e->angleDelta().y() / 120.0);
-            useGrab(grabPixel_, true);
+            useGrab(grabPixel_, true, false);
             return true;
         }
         if (!(e->modifiers() & Qt::ControlModifier)) return orbitPanOrZoom(event);
@@ -219,7 +226,9 @@ bool ViewportInput::eventFilter(QObject* watched, QEvent* event) {
         hideTool();
         return false;
     case QEvent::KeyPress:
-        return orbitPanOrZoom(event);
+        if (!orbitPanOrZoom(event)) return false;
+        emit acted();
+        return true;
     default:
         return false;
     }

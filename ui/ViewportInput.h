@@ -29,9 +29,14 @@ class ViewportInput : public QObject {
     enum class Tool { Push, Grab, Pin };
     Tool tool() const { return tool_; }
     void setTool(Tool tool);
+    // The sheet let go of a held grab (an undo or redo): the hand holds nothing until the
+    // next press.
+    void letGo();
 
     // How far a pressed tool reaches into the paper, as a share of its radius.
-    static constexpr double kPushDepth = 0.6;
+    static constexpr double kDefaultPushDepth = 0.6;
+    double pushDepth() const { return pushDepth_; }
+    void setPushDepth(double shareOfRadius) { pushDepth_ = shareOfRadius; }
     static constexpr double kDefaultToolRadius = 0.03; // m
     // A pin click toggles the vertices within this share of the tool's radius.
     static constexpr double kPinShare = 0.5;
@@ -51,6 +56,7 @@ class ViewportInput : public QObject {
   signals:
     void toolRadiusChanged(double radius); // by Ctrl + wheel
     void strokeBegan();                    // the left button went down over the sheet
+    void acted();                          // any press, wheel or key the view handled
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -58,7 +64,7 @@ class ViewportInput : public QObject {
   private:
     void pointTool(const QPoint& pixel, bool pressed);
     // Grab and Pin: the left button at `pixel` (pressed, moved with it held, released).
-    void useGrab(const QPoint& pixel, bool held);
+    void useGrab(const QPoint& pixel, bool held, bool press);
     void usePin(const QPoint& pixel, bool pressed);
     std::optional<PickHit> pick(const QPoint& pixel) const;
     OrbitCamera::Ray rayAt(const QPoint& pixel) const;
@@ -68,6 +74,7 @@ class ViewportInput : public QObject {
     Viewport* viewport_;
     SimulationThread* sim_;
     double toolRadius_ = kDefaultToolRadius;
+    double pushDepth_ = kDefaultPushDepth;
     Vec3 toolTarget_ = Vec3::Zero();
     bool toolPressed_ = false;
     bool toolShown_ = true; // a scene may start with the sphere shown
