@@ -195,12 +195,8 @@ World EditSession::worldToSave() const {
 
 void EditSession::pullGrabbed() {
     if (!grabbing()) return;
-    World& w = sim_.world();
-    auto& V = w.sheet.verts;
-    Vec3 move = grabTarget_ - V.x[grabbed_];
-    const double limit = kMaxToolSpeed * w.params.dt;
-    if (move.norm() > limit) move *= limit / move.norm();
-    V.v[grabbed_] = move / w.params.dt;
+    auto& V = sim_.world().sheet.verts;
+    V.v[grabbed_] = boundedMove(V.x[grabbed_], grabTarget_) / sim_.world().params.dt;
 }
 
 void EditSession::setPins(const std::vector<Index>& vertices, bool pinned) {
@@ -235,12 +231,7 @@ std::optional<EditSession::StrokeEnd> EditSession::pin(const Vec3& point, double
     beginStroke();
     setPins(changed, to);
     Stroke stroke;
-    stroke.firstEvent = strokeStart_;
-    stroke.pressedOn = pressedMesh_;
-    stroke.frozenBefore = pressedFrozen_;
-    stroke.before = std::move(pressedLook_);
-    pressedLook_ = {};
-    stroke.after = look();
+    closeStroke(stroke);
     stroke.pinnedTo = to;
     stroke.pinChanged = std::move(changed);
     StrokeEnd end = keepStroke(std::move(stroke), to ? StrokeKind::Pin : StrokeKind::Unpin);
@@ -279,9 +270,6 @@ void EditSession::beginStroke() {
 std::optional<EditSession::StrokeEnd> EditSession::endStroke(StrokeKind kind) {
     const Sheet& s = sim_.world().sheet;
     Stroke stroke;
-    stroke.firstEvent = strokeStart_;
-    stroke.pressedOn = pressedMesh_;
-    stroke.frozenBefore = pressedFrozen_;
     for (Index e = strokeStart_; e < static_cast<Index>(s.events.size()); ++e) {
         const DamageEvent& ev = s.events[e];
         if (!ev.active) continue;
@@ -294,10 +282,23 @@ std::optional<EditSession::StrokeEnd> EditSession::endStroke(StrokeKind kind) {
     for (std::size_t i = 0; !moved && i < pressedLook_.x.size(); ++i)
         moved = (s.verts.x[i] - pressedLook_.x[i]).squaredNorm() > kStrokeMoves * kStrokeMoves;
     if (!moved) return std::nullopt;
-    stroke.before = std::move(pressedLook_);
-    stroke.after = look();
-    pressedLook_ = {};
+    closeStroke(stroke);
     return keepStroke(std::move(stroke), kind);
+}
+
+void EditSession::closeStroke(Stroke& stroke) {
+    stroke.firstEvent = strokeStart_;
+    stroke.pressedOn = pressedMesh_;
+    stroke.frozenBefore = pressedFrozen_;
+    stroke.before = std::exchange(pressedLook_, {});
+    stroke.after = look();
+}
+
+Vec3 EditSession::boundedMove(const Vec3& from, const Vec3& to) const {
+    Vec3 move = to - from;
+    const double limit = kMaxToolSpeed * sim_.world().params.dt;
+    if (move.norm() > limit) move *= limit / move.norm();
+    return move;
 }
 
 EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke, StrokeKind kind) {
@@ -375,9 +376,7 @@ StepStatus EditSession::advance(int steps) {
     World& w = sim_.world();
     for (int k = 0; k < steps; ++k) {
         SphereTool& sphere = w.sphere;
-        Vec3 move = toolTarget_ - sphere.center;
-        const double limit = kMaxToolSpeed * w.params.dt;
-        if (move.norm() > limit) move *= limit / move.norm();
+        const Vec3 move = boundedMove(sphere.center, toolTarget_);
         sphere.center += move;
         sphere.velocity = move / w.params.dt;
         pullGrabbed();

@@ -27,11 +27,10 @@ struct EditCommand {
     };
     Kind kind = Kind::Tool;
     std::int64_t step = 0;
-    Vec3 target = Vec3::Zero(); // Tool, Grab, Pin
-    double radius = 0.0;        // Tool, Pin
-    bool visible = false;       // Tool
-    bool pressed = false;       // Tool, Grab (held)
-    // `visible` for a Grab: it begins (picks a vertex up).
+    Vec3 target = Vec3::Zero();              // Tool, Grab, Pin
+    double radius = 0.0;                     // Tool, Pin
+    bool visible = false;                    // Tool; for a Grab, it begins (picks a vertex up)
+    bool pressed = false;                    // Tool; for a Grab, it is held
     int stroke = -1;                         // Undo, Redo
     std::shared_ptr<const SimParams> params; // Params (shared: most commands are tool moves)
 };
@@ -89,12 +88,11 @@ class EditSession {
     // limit) a redo is refused, so that undo/redo cannot grow the log without bound.
     static constexpr std::size_t kMaxDamageEvents = 8'000'000;
 
-    // Grab: `begin` picks up the free vertex nearest to `target`; while `held` it follows
-    // `target`
-    // (no faster than kMaxToolSpeed, never below the ground), pinned for the solver, so
-    // the sheet hangs from it; on release it is let go with its velocity and falls. A
-    // grab is a stroke like a push. Refused while the push tool is pressed; a pinned
-    // vertex is not grabbed (the pin holds).
+    // Grab: `begin` picks up the free vertex nearest to `target`; while `held` it
+    // follows `target` (no faster than kMaxToolSpeed, never below the ground), pinned for
+    // the solver, so the sheet hangs from it; on release it is let go with its velocity
+    // and falls. A grab is a stroke like a push. Refused while the push tool is pressed;
+    // a pinned vertex is not grabbed (the pin holds).
     std::optional<StrokeEnd> grab(const Vec3& target, bool held, bool begin);
     bool grabbing() const { return grabbed_ != kNone; }
     // The world as a file should keep it: a grabbed vertex is held, not pinned.
@@ -175,6 +173,10 @@ class EditSession {
     // Gives back `look` if the sheet has the same vertices again; false otherwise.
     bool restore(const SheetLook& look);
     std::optional<StrokeEnd> endStroke(StrokeKind kind);
+    // Fills in `stroke`'s start (from beginStroke) and its sheet before and after.
+    void closeStroke(Stroke& stroke);
+    // The way from `from` toward `to` that one step allows at kMaxToolSpeed.
+    Vec3 boundedMove(const Vec3& from, const Vec3& to) const;
     // Lets a grabbed vertex go; no undo step.
     void releaseGrab();
     void setPins(const std::vector<Index>& vertices, bool pinned);

@@ -87,6 +87,22 @@ QByteArray withCommandByte(const EditLog& log, qsizetype offset, char value) {
     return withCommandBytes(log, offset, QByteArray(1, value));
 }
 
+// The session's recording replays to the same world, in memory and through the file.
+void checkReplays(const EditSession& session) {
+    EditSession replayed(session.log());
+    QCOMPARE(QString::fromStdString(replay(session.log(), replayed)), QString());
+    QCOMPARE(encodeWorld(replayed.world()), encodeWorld(session.world()));
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("session.paperrec"));
+    QString error;
+    QVERIFY2(saveRecording(session.log(), path, &error), qPrintable(error));
+    const RecordingLoad load = loadRecording(path);
+    QVERIFY2(load.log, qPrintable(load.error));
+    EditSession fromFile(*load.log);
+    QCOMPARE(QString::fromStdString(replay(*load.log, fromFile)), QString());
+    QCOMPARE(stateHash(fromFile.world().sheet), stateHash(session.world().sheet));
+}
+
 } // namespace
 
 class TestEditSession : public QObject {
@@ -397,19 +413,7 @@ class TestEditSession : public QObject {
         session.advance(100);
         session.undoStroke(0);
         session.advance(30);
-        EditSession replayed(session.log());
-        QCOMPARE(QString::fromStdString(replay(session.log(), replayed)), QString());
-        QCOMPARE(encodeWorld(replayed.world()), encodeWorld(session.world()));
-        // And through the file.
-        QTemporaryDir dir;
-        const QString path = dir.filePath(QStringLiteral("settle.paperrec"));
-        QString error;
-        QVERIFY2(saveRecording(session.log(), path, &error), qPrintable(error));
-        const RecordingLoad load = loadRecording(path);
-        QVERIFY2(load.log, qPrintable(load.error));
-        EditSession fromFile(*load.log);
-        QCOMPARE(QString::fromStdString(replay(*load.log, fromFile)), QString());
-        QCOMPARE(stateHash(fromFile.world().sheet), stateHash(session.world().sheet));
+        checkReplays(session);
     }
 
     // Grab: the vertex follows the target at the tool's speed limit, the sheet hangs from
@@ -614,18 +618,7 @@ class TestEditSession : public QObject {
         session.advance(20);
         session.redoStroke(grabbed->stroke);
         session.advance(20);
-        EditSession replayed(session.log());
-        QCOMPARE(QString::fromStdString(replay(session.log(), replayed)), QString());
-        QCOMPARE(encodeWorld(replayed.world()), encodeWorld(session.world()));
-        QTemporaryDir dir;
-        const QString path = dir.filePath(QStringLiteral("grab.paperrec"));
-        QString error;
-        QVERIFY2(saveRecording(session.log(), path, &error), qPrintable(error));
-        const RecordingLoad load = loadRecording(path);
-        QVERIFY2(load.log, qPrintable(load.error));
-        EditSession fromFile(*load.log);
-        QCOMPARE(QString::fromStdString(replay(*load.log, fromFile)), QString());
-        QCOMPARE(stateHash(fromFile.world().sheet), stateHash(session.world().sheet));
+        checkReplays(session);
     }
 
     void aNewSheetForgetsTheStrokesButKeepsTheTool() {

@@ -45,6 +45,11 @@ OrbitCamera::Ray ViewportInput::rayAt(const QPoint& pixel) const {
                                                viewport_->height());
 }
 
+Vec3 ViewportInput::facing() const {
+    const OrbitCamera& c = viewport_->camera();
+    return (c.target - c.eye()).normalized();
+}
+
 std::optional<PickHit> ViewportInput::pick(const QPoint& pixel) const {
     auto snap = viewport_->snapshot();
     if (!snap) return std::nullopt;
@@ -102,11 +107,11 @@ void ViewportInput::useGrab(const QPoint& pixel, bool held, bool press) {
     // view: dragging moves it across the screen at the depth it was picked up at.
     grabPixel_ = pixel;
     const OrbitCamera::Ray ray = rayAt(pixel);
-    const Vec3 facing = (viewport_->camera().target - viewport_->camera().eye()).normalized();
-    const double along = ray.direction.dot(facing);
+    const Vec3 ahead = facing();
+    const double along = ray.direction.dot(ahead);
     Vec3 target = grabPoint_;
     if (std::abs(along) > 1e-9)
-        target = ray.origin + ray.direction * ((grabPoint_ - ray.origin).dot(facing) / along);
+        target = ray.origin + ray.direction * ((grabPoint_ - ray.origin).dot(ahead) / along);
     sim_->grab(target, held, false);
     if (held) return;
     grabbing_ = false;
@@ -210,9 +215,7 @@ bool ViewportInput::eventFilter(QObject* watched, QEvent* event) {
         auto* e = static_cast<QWheelEvent*>(event);
         if (grabbing_) {
             // Nearer the eye (up, seen from above) or further away.
-            const OrbitCamera& c = viewport_->camera();
-            const Vec3 toEye = (c.eye() - c.target).normalized();
-            grabPoint_ += toEye * (kGrabWheelStep * e->angleDelta().y() / 120.0);
+            grabPoint_ -= facing() * (kGrabWheelStep * e->angleDelta().y() / 120.0);
             useGrab(grabPixel_, true, false);
             return true;
         }

@@ -68,6 +68,7 @@ class ViewportInput : public QObject {
     void usePin(const QPoint& pixel, bool pressed);
     std::optional<PickHit> pick(const QPoint& pixel) const;
     OrbitCamera::Ray rayAt(const QPoint& pixel) const;
+    Vec3 facing() const; // the view's direction, from the eye
     void hideTool();
     bool orbitPanOrZoom(QEvent* event);
 
