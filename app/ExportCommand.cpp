@@ -1,6 +1,7 @@
 #include "ExportCommand.h"
 
 #include "CommandLine.h"
+#include "LookOptions.h"
 #include "Simulation.h"
 #include "Subdivision.h"
 #include "SurfaceExport.h"
@@ -27,6 +28,7 @@ int runExport(const QStringList& arguments) {
          QStringLiteral("level")},
         {QStringLiteral("no-normals"), QStringLiteral("Leave vertex normals out.")},
     });
+    addLookOptions(parser);
     if (!parseCommand(parser, arguments)) return 0;
     if (!parser.isSet(QStringLiteral("output")))
         throw UsageError{QStringLiteral("--output is required (a .obj, .ply or .glb file)")};
@@ -35,7 +37,8 @@ int runExport(const QStringList& arguments) {
     if (!meshFormatForPath(output, &format))
         throw UsageError{
             QStringLiteral("--output: '%1' does not end in .obj, .ply or .glb").arg(output)};
-    const QStringList inputs = worldInputs(parser);
+    QStringList inputs = worldInputs(parser);
+    const PaperLook look = lookFromOptions(parser, &inputs);
     requireWritable(QStringLiteral("output"), output, inputs);
     const int level = static_cast<int>(
         integerOption(parser, QStringLiteral("subdiv"), 0, kMaxSubdivisionLevel).value_or(2));
@@ -51,8 +54,8 @@ int runExport(const QStringList& arguments) {
         }
     const SurfaceMesh mesh = subdivideSheet(sim.world().sheet, sim.world().params.sigma, level);
     QString error;
-    if (!writeSurface(mesh, output, format, !parser.isSet(QStringLiteral("no-normals")), &error,
-                      inputs)) {
+    if (!writeSurface(mesh, output, format, !parser.isSet(QStringLiteral("no-normals")),
+                      surfaceLook(look), &error, inputs)) {
         QTextStream(stderr) << "paperfold: " << error << '\n';
         return 2;
     }

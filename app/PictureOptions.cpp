@@ -1,6 +1,7 @@
 #include "PictureOptions.h"
 
 #include "CommandLine.h"
+#include "LookOptions.h"
 #include "OffscreenRenderer.h"
 
 #include <cmath>
@@ -24,6 +25,7 @@ void addPictureOptions(QCommandLineParser& parser) {
          QStringLiteral("list")},
         {QStringLiteral("no-legend"), QStringLiteral("Leave the overlay legend out.")},
     });
+    addLookOptions(parser);
 }
 
 PictureSetup pictureFromOptions(const QCommandLineParser& parser) {
@@ -44,6 +46,7 @@ PictureSetup pictureFromOptions(const QCommandLineParser& parser) {
     p.options.subdivision =
         static_cast<int>(integerOption(parser, QStringLiteral("subdiv"), 0, 4).value_or(3));
     p.options.legend = !parser.isSet(QStringLiteral("no-legend"));
+    p.options.look = lookFromOptions(parser, &p.lookInputs);
     if (parser.isSet(QStringLiteral("overlay"))) {
         QString error;
         const auto bits = overlaysFromNames(parser.value(QStringLiteral("overlay")), &error);

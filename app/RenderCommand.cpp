@@ -71,7 +71,7 @@ int runRender(const QStringList& arguments) {
             QStringLiteral("--output needs a pattern such as frame_%04d.png with --frames")};
     const double threshold =
         realOption(parser, QStringLiteral("threshold"), 0.0, 1.0).value_or(0.01);
-    QStringList inputs = worldInputs(parser);
+    QStringList inputs = worldInputs(parser) + picture.lookInputs;
     const QString refPath = parser.value(QStringLiteral("reference"));
     if (parser.isSet(QStringLiteral("reference"))) inputs << refPath;
     // Every target is checked before any work, so a bad one fails at once.

@@ -69,7 +69,8 @@ int runReplay(const QStringList& arguments) {
         QString error;
         RenderOptions options = picture.options;
         options.sigma = session.world().params.sigma;
-        if (writePng(renderer->render(snap, camera, options), frames->path(int(f)), &error, {path}))
+        if (writePng(renderer->render(snap, camera, options), frames->path(int(f)), &error,
+                     QStringList{path} + picture.lookInputs))
             return true;
         err << "paperfold: " << error << '\n';
         return false;
@@ -80,7 +81,8 @@ int runReplay(const QStringList& arguments) {
                                             "100000 frames)")
                                  .arg(frameCount)};
         for (std::int64_t f = 0; f < frameCount; ++f)
-            requireWritable(QStringLiteral("render"), frames->path(int(f)), {path});
+            requireWritable(QStringLiteral("render"), frames->path(int(f)),
+                            QStringList{path} + picture.lookInputs);
         QString error;
         renderer = OffscreenRenderer::create(picture.width, picture.height, &error);
         if (!renderer) {

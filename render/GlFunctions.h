@@ -20,6 +20,7 @@ using GlProcResolver = std::function<void*(const char* name)>;
     X(PFNGLBINDBUFFERPROC, BindBuffer)                                                             \
     X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                                   \
     X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                                                 \
+    X(PFNGLBINDTEXTUREPROC, BindTexture)                                                           \
     X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                                   \
     X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)                                               \
     X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)                                                   \
@@ -36,6 +37,7 @@ using GlProcResolver = std::function<void*(const char* name)>;
     X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                                       \
     X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                                           \
     X(PFNGLDELETESHADERPROC, DeleteShader)                                                         \
+    X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                                     \
     X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                                             \
     X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                               \
     X(PFNGLDEPTHMASKPROC, DepthMask)                                                               \
@@ -49,7 +51,9 @@ using GlProcResolver = std::function<void*(const char* name)>;
     X(PFNGLGENBUFFERSPROC, GenBuffers)                                                             \
     X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                                                   \
     X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)                                                 \
+    X(PFNGLGENTEXTURESPROC, GenTextures)                                                           \
     X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                                                   \
+    X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)                                                     \
     X(PFNGLGETERRORPROC, GetError)                                                                 \
     X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                           \
     X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                               \
@@ -67,6 +71,8 @@ using GlProcResolver = std::function<void*(const char* name)>;
     X(PFNGLSHADERSOURCEPROC, ShaderSource)                                                         \
     X(PFNGLSTENCILFUNCPROC, StencilFunc)                                                           \
     X(PFNGLSTENCILOPPROC, StencilOp)                                                               \
+    X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                                             \
+    X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                                       \
     X(PFNGLUNIFORM1FPROC, Uniform1f)                                                               \
     X(PFNGLUNIFORM1IPROC, Uniform1i)                                                               \
     X(PFNGLUNIFORM2FPROC, Uniform2f)                                                               \

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "PaperLook.h"
+
 #include <QString>
 #include <optional>
 
@@ -31,6 +33,7 @@ struct RenderOptions {
     // Heat-map ranges (values at the top of the legend).
     double strainRange = 0.05;
     double probabilityRange = 0.05;
+    PaperLook look;
 };
 
 // Parses "springs,probability,strain,breaks,wireframe" (or "none"); nullopt and a

@@ -16,7 +16,7 @@ QByteArray shaderSource(const char* name) {
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
-constexpr int kSurfaceFloats = 10; // position 3, normal 3, colour 4
+constexpr int kSurfaceFloats = 12; // position 3, normal 3, colour 4, texture coordinate 2
 constexpr int kLineFloats = 7;     // position 3, colour 4
 
 void pushLine(std::vector<float>& out, const Vec3& a, const Vec3& b, const float* rgba) {
@@ -141,7 +141,9 @@ void SheetRenderer::setSurfaceLayout() {
                            reinterpret_cast<void*>(3 * sizeof(float)));
     gl.VertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride,
                            reinterpret_cast<void*>(6 * sizeof(float)));
-    for (GLuint a = 0; a < 3; ++a) gl.EnableVertexAttribArray(a);
+    gl.VertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride,
+                           reinterpret_cast<void*>(10 * sizeof(float)));
+    for (GLuint a = 0; a < 4; ++a) gl.EnableVertexAttribArray(a);
 }
 
 void SheetRenderer::makeSphere() {
@@ -156,7 +158,7 @@ void SheetRenderer::makeSphere() {
             const float n[3] = {static_cast<float>(std::sin(th) * std::cos(ph)),
                                 static_cast<float>(std::cos(th)),
                                 static_cast<float>(std::sin(th) * std::sin(ph))};
-            v.insert(v.end(), {n[0], n[1], n[2], n[0], n[1], n[2], 0, 0, 0, 0});
+            v.insert(v.end(), {n[0], n[1], n[2], n[0], n[1], n[2], 0, 0, 0, 0, 0, 0});
         }
     for (int r = 0; r < rings; ++r)
         for (int s = 0; s < segments; ++s) {
@@ -188,6 +190,9 @@ void SheetRenderer::release() {
     gl.DeleteBuffers(6, buffers);
     const GLuint arrays[] = {surfaceVao_, linesVao_, groundVao_, sphereVao_, emptyVao_};
     gl.DeleteVertexArrays(5, arrays);
+    if (texture_) gl.DeleteTextures(1, &texture_);
+    texture_ = 0;
+    textureKey_ = 0;
     gl_ = nullptr;
 }
 
@@ -206,8 +211,10 @@ void SheetRenderer::uploadSurface(const SheetSnapshot& snap, const RenderOptions
                          strain};
     if (snap.serial != 0 && key == surfaceKey_) return;
     surfaceKey_ = key;
-    const SurfaceMesh mesh = subdivide(snap.x, snap.tris, strain ? &snap.vertexStrain : nullptr,
-                                       options.sigma, options.subdivision);
+    const bool material = snap.X.size() == snap.x.size();
+    const SurfaceMesh mesh =
+        subdivide(snap.x, snap.tris, strain ? &snap.vertexStrain : nullptr,
+                  material ? &snap.X : nullptr, options.sigma, options.subdivision);
     clearFor(vertexData_, mesh.positions.size() * kSurfaceFloats);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         Vec3 p = mesh.positions[i];
@@ -222,6 +229,10 @@ void SheetRenderer::uploadSurface(const SheetSnapshot& snap, const RenderOptions
         } else {
             vertexData_.insert(vertexData_.end(), {0.0f, 0.0f, 0.0f, 0.0f});
         }
+        if (material)
+            vertexData_.insert(vertexData_.end(), {float(mesh.uvs[i].x()), float(mesh.uvs[i].y())});
+        else
+            vertexData_.insert(vertexData_.end(), {0.0f, 0.0f});
     }
     clearFor(indexData_, mesh.triangles.size() * 3);
     for (const auto& t : mesh.triangles) indexData_.insert(indexData_.end(), t.begin(), t.end());
@@ -233,6 +244,30 @@ void SheetRenderer::uploadSurface(const SheetSnapshot& snap, const RenderOptions
                   vertexData_.data(), GL_STREAM_DRAW);
     gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indexData_.size() * 4),
                   indexData_.data(), GL_STREAM_DRAW);
+}
+
+bool SheetRenderer::bindPaperTexture(const PaperLook& look) {
+    const QImage image = paperTextureImage(look);
+    const GlFunctions& gl = *gl_;
+    if (image.isNull()) return false;
+    if (!texture_) gl.GenTextures(1, &texture_);
+    gl.ActiveTexture(GL_TEXTURE0);
+    gl.BindTexture(GL_TEXTURE_2D, texture_);
+    if (image.cacheKey() != textureKey_) {
+        textureKey_ = image.cacheKey();
+        const QImage rgba = image.convertToFormat(QImage::Format_RGBA8888);
+        // Rows go up as they are: GL's t = 0 is the first row, the image's top, which
+        // is where the texture coordinates (Subdivision.h) put v = 0.
+        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rgba.width(), rgba.height(), 0, GL_RGBA,
+                      GL_UNSIGNED_BYTE, rgba.constBits());
+        gl.GenerateMipmap(GL_TEXTURE_2D);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    return true;
 }
 
 void SheetRenderer::buildLines(const SheetSnapshot& snap, const RenderOptions& options) {
@@ -368,7 +403,10 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
     setMatrix(surfaceProgram_, "uViewProj", viewProj);
     setMatrix(surfaceProgram_, "uModel", Mat4::Identity());
     setVec3(surfaceProgram_, "uEye", eye);
-    setVec3(surfaceProgram_, "uBaseColor", kPaper);
+    setVec3(surfaceProgram_, "uBaseColor", options.look.color.data());
+    const bool textured = bindPaperTexture(options.look);
+    gl.Uniform1i(gl.GetUniformLocation(surfaceProgram_, "uTexture"), 0);
+    gl.Uniform1f(gl.GetUniformLocation(surfaceProgram_, "uTextured"), textured ? 1.0f : 0.0f);
     gl.Uniform1f(gl.GetUniformLocation(surfaceProgram_, "uAlpha"), 1.0f);
     gl.Uniform1f(gl.GetUniformLocation(surfaceProgram_, "uFacet"), float(options.facet));
     gl.BindVertexArray(surfaceVao_);
@@ -411,6 +449,7 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
         gl.UseProgram(surfaceProgram_);
         setMatrix(surfaceProgram_, "uModel", model);
         setVec3(surfaceProgram_, "uBaseColor", tool);
+        gl.Uniform1f(gl.GetUniformLocation(surfaceProgram_, "uTextured"), 0.0f);
         gl.Uniform1f(gl.GetUniformLocation(surfaceProgram_, "uAlpha"), 0.45f);
         gl.Uniform1f(gl.GetUniformLocation(surfaceProgram_, "uFacet"), 0.0f);
         gl.BindVertexArray(sphereVao_);

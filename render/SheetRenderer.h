@@ -24,8 +24,7 @@ class SheetRenderer {
     void render(const SheetSnapshot& snapshot, const OrbitCamera& camera,
                 const RenderOptions& options, int width, int height);
 
-    // The paper colour and the background, also used by legends and tests.
-    static constexpr float kPaper[3] = {0.95f, 0.94f, 0.90f};
+    // The background, also used by legends and tests (the paper's colour is the look's).
     static constexpr float kBackground[3] = {0.80f, 0.82f, 0.85f};
 
   private:
@@ -36,6 +35,9 @@ class SheetRenderer {
     GLuint program(const char* vert, const char* geom, const char* frag, QString* error);
     void uploadSurface(const SheetSnapshot& snap, const RenderOptions& options);
     void buildLines(const SheetSnapshot& snap, const RenderOptions& options);
+    // Binds the look's texture to unit 0, uploading it when the image changed; false
+    // (nothing bound) for a plain look.
+    bool bindPaperTexture(const PaperLook& look);
     void makeSphere();
     // Position, normal, colour of the surface and sphere buffers (the bound VAO and VBO).
     void setSurfaceLayout();
@@ -50,6 +52,8 @@ class SheetRenderer {
     GLuint groundVao_ = 0, groundVbo_ = 0;
     GLuint sphereVao_ = 0, sphereVbo_ = 0, sphereEbo_ = 0;
     GLuint emptyVao_ = 0;
+    GLuint texture_ = 0;
+    qint64 textureKey_ = 0; // QImage::cacheKey of what texture_ holds
     GLsizei surfaceIndexCount_ = 0, sphereIndexCount_ = 0;
     // What the surface buffers hold, so a repaint with a new camera only does not
     // subdivide again.

@@ -17,8 +17,8 @@ bool exportSnapshotImage(const SheetSnapshot& snap, const OrbitCamera& camera,
 bool exportSnapshotMesh(const SheetSnapshot& snap, const RenderOptions& options,
                         const QString& path, MeshFormat format, QString* error) {
     const SurfaceMesh mesh =
-        subdivide(snap.x, snap.tris, nullptr, options.sigma, options.subdivision);
-    return writeSurface(mesh, path, format, true, error);
+        subdivide(snap.x, snap.tris, nullptr, &snap.X, options.sigma, options.subdivision);
+    return writeSurface(mesh, path, format, true, surfaceLook(options.look), error);
 }
 
 } // namespace pf

@@ -22,16 +22,34 @@ Vec3 midpointNormal(const Vec3& ni, const Vec3& nj) {
 }
 
 SurfaceMesh subdivideSheet(const Sheet& sheet, double sigma, int levels) {
-    return subdivide(sheet.verts.x, sheet.tris, nullptr, sigma, levels);
+    return subdivide(sheet.verts.x, sheet.tris, nullptr, &sheet.verts.X, sigma, levels);
+}
+
+std::vector<Vec2> materialUvs(const std::vector<Vec2>& material) {
+    if (material.empty()) return {};
+    Vec2 lo = material.front(), hi = lo;
+    for (const Vec2& X : material) {
+        lo = lo.cwiseMin(X);
+        hi = hi.cwiseMax(X);
+    }
+    Vec2 size = hi - lo;
+    for (int k = 0; k < 2; ++k)
+        if (!(size[k] > 0.0)) size[k] = 1.0; // a degenerate sheet: no stretching by 1/0
+    std::vector<Vec2> uvs;
+    uvs.reserve(material.size());
+    for (const Vec2& X : material) uvs.push_back((X - lo).cwiseQuotient(size));
+    return uvs;
 }
 
 SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& tris,
-                      const std::vector<float>* scalars, double sigma, int levels) {
+                      const std::vector<float>* scalars, const std::vector<Vec2>* material,
+                      double sigma, int levels) {
     levels = std::clamp(levels, 0, kMaxSubdivisionLevel);
     SurfaceMesh mesh;
     mesh.positions = x;
     computeVertexNormals(x, tris, mesh.normals);
     if (scalars) mesh.scalars = *scalars;
+    if (material) mesh.uvs = materialUvs(*material);
     mesh.triangles.reserve(tris.size());
     for (const Triangle& t : tris)
         mesh.triangles.push_back({static_cast<std::uint32_t>(t.v[0]),
@@ -67,6 +85,7 @@ SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& t
             mesh.normals.push_back(midpointNormal(mesh.normals[a], mesh.normals[b]));
             if (!mesh.scalars.empty())
                 mesh.scalars.push_back(0.5f * (mesh.scalars[a] + mesh.scalars[b]));
+            if (!mesh.uvs.empty()) mesh.uvs.push_back(0.5 * (mesh.uvs[a] + mesh.uvs[b]));
             for (; i < corners.size() && corners[i].first == key; ++i)
                 midpointOfCorner[corners[i].second] = m;
         }

@@ -23,6 +23,12 @@ struct SurfaceMesh {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
     std::vector<float> scalars; // optional per-vertex value (a heat map), averaged at midpoints
+    // Optional texture coordinates: the material coordinates scaled to 0..1 over the
+    // sheet (materialUvs), u along the sheet's width (x), v along its length (z), with
+    // the image's top-left corner (glTF's convention) at the sheet's (-x, -z) corner.
+    // A midpoint takes the mean: the coordinate is affine in the material, so that is
+    // the material midpoint's own coordinate.
+    std::vector<Vec2> uvs;
     std::vector<std::array<std::uint32_t, 3>> triangles;
 };
 
@@ -32,10 +38,16 @@ inline constexpr int kMaxSubdivisionLevel = 4;
 // each time splitting it into four at the Hermite midpoints of its edges. A
 // midpoint is made once per edge and shared by both triangles, so the surface
 // has no cracks. Vertex normals start as the sheet's area-weighted normals.
-// `scalars`, if not null, holds one value per vertex carried to the subdivided surface.
+// `scalars`, if not null, holds one value per vertex carried to the subdivided surface;
+// `material`, if not null, the vertices' material coordinates, carried as uvs.
 SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& tris,
-                      const std::vector<float>* scalars, double sigma, int levels);
+                      const std::vector<float>* scalars, const std::vector<Vec2>* material,
+                      double sigma, int levels);
 SurfaceMesh subdivideSheet(const Sheet& sheet, double sigma, int levels);
+
+// Material coordinates scaled to 0..1 over their bounding box, per axis (a sheet's
+// material domain is its rectangle: inserted vertices lie on its edges).
+std::vector<Vec2> materialUvs(const std::vector<Vec2>& material);
 
 // The finest level up to `requested` at which `triangles` simulation triangles give at
 // most `maxTriangles` surface triangles (each level has four times the one before);

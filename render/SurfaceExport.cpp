@@ -12,26 +12,36 @@ namespace pf {
 namespace {
 
 QByteArray objBytes(const SurfaceMesh& mesh, bool withNormals) {
+    const bool withUvs = mesh.uvs.size() == mesh.positions.size();
     QByteArray out;
-    out.reserve(static_cast<qsizetype>(mesh.positions.size() * 80 + mesh.triangles.size() * 40));
+    out.reserve(static_cast<qsizetype>(mesh.positions.size() * 110 + mesh.triangles.size() * 50));
     out += "# PaperFold sheet surface (Kang & Cho 4.3 subdivision), metres, y up\n";
-    char line[128];
+    if (withUvs) out += "# vt: the material coordinates over the sheet, 0..1\n";
+    char line[160];
     for (const Vec3& p : mesh.positions) {
         std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
         out += line;
     }
+    if (withUvs)
+        for (const Vec2& uv : mesh.uvs) {
+            std::snprintf(line, sizeof line, "vt %.9g %.9g\n", uv.x(), 1.0 - uv.y());
+            out += line;
+        }
     if (withNormals)
         for (const Vec3& n : mesh.normals) {
             std::snprintf(line, sizeof line, "vn %.6f %.6f %.6f\n", n.x(), n.y(), n.z());
             out += line;
         }
+    // One index serves position, uv and normal alike: "i", "i/i", "i//i" or "i/i/i".
+    const char* corner =
+        withUvs ? (withNormals ? " %u/%u/%u" : " %u/%u") : (withNormals ? " %u//%u" : " %u");
     for (const auto& t : mesh.triangles) {
-        if (withNormals)
-            std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", t[0] + 1, t[0] + 1,
-                          t[1] + 1, t[1] + 1, t[2] + 1, t[2] + 1);
-        else
-            std::snprintf(line, sizeof line, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
-        out += line;
+        out += 'f';
+        for (std::uint32_t v : t) {
+            std::snprintf(line, sizeof line, corner, v + 1, v + 1, v + 1);
+            out += line;
+        }
+        out += '\n';
     }
     return out;
 }
@@ -42,12 +52,14 @@ template <class T> void appendLE(QByteArray& out, T v) {
 }
 
 QByteArray plyBytes(const SurfaceMesh& mesh, bool withNormals) {
+    const bool withUvs = mesh.uvs.size() == mesh.positions.size();
     QByteArray out;
     out += "ply\nformat binary_little_endian 1.0\ncomment PaperFold sheet surface, metres, y up\n";
     out += "element vertex " + QByteArray::number(static_cast<qulonglong>(mesh.positions.size())) +
            "\n";
     out += "property float x\nproperty float y\nproperty float z\n";
     if (withNormals) out += "property float nx\nproperty float ny\nproperty float nz\n";
+    if (withUvs) out += "property float s\nproperty float t\n";
     out +=
         "element face " + QByteArray::number(static_cast<qulonglong>(mesh.triangles.size())) + "\n";
     out += "property list uchar uint vertex_indices\nend_header\n";
@@ -61,6 +73,10 @@ QByteArray plyBytes(const SurfaceMesh& mesh, bool withNormals) {
         for (int k = 0; k < 3; ++k) putFloat(mesh.positions[i][k]);
         if (withNormals)
             for (int k = 0; k < 3; ++k) putFloat(mesh.normals[i][k]);
+        if (withUvs) {
+            putFloat(mesh.uvs[i].x());
+            putFloat(1.0 - mesh.uvs[i].y());
+        }
     }
     for (const auto& t : mesh.triangles) {
         out.append(char(3));
@@ -93,14 +109,16 @@ int addAccessor(tinygltf::Model& model, int view, int componentType, int type, s
     return static_cast<int>(model.accessors.size()) - 1;
 }
 
-QByteArray glbBytes(const SurfaceMesh& mesh, bool withNormals, QString* error) {
+QByteArray glbBytes(const SurfaceMesh& mesh, bool withNormals, const SurfaceLook& look,
+                    QString* error) {
+    const bool withUvs = mesh.uvs.size() == mesh.positions.size();
     tinygltf::Model model;
     model.asset.version = "2.0";
     model.asset.generator = "PaperFold";
     model.buffers.emplace_back();
     std::vector<unsigned char>& data = model.buffers[0].data;
 
-    std::vector<float> positions, normals;
+    std::vector<float> positions, normals, uvs;
     std::vector<std::uint32_t> indices;
     std::vector<double> lo(3, std::numeric_limits<double>::infinity()), hi(3, -lo[0]);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i)
@@ -111,6 +129,8 @@ QByteArray glbBytes(const SurfaceMesh& mesh, bool withNormals, QString* error) {
             hi[k] = std::max<double>(hi[k], f);
             normals.push_back(static_cast<float>(mesh.normals[i][k]));
         }
+    if (withUvs)
+        for (const Vec2& uv : mesh.uvs) uvs.insert(uvs.end(), {float(uv.x()), float(uv.y())});
     for (const auto& t : mesh.triangles) indices.insert(indices.end(), t.begin(), t.end());
 
     tinygltf::Primitive prim;
@@ -127,6 +147,12 @@ QByteArray glbBytes(const SurfaceMesh& mesh, bool withNormals, QString* error) {
         prim.attributes["NORMAL"] = addAccessor(model, nv, TINYGLTF_COMPONENT_TYPE_FLOAT,
                                                 TINYGLTF_TYPE_VEC3, mesh.positions.size());
     }
+    if (withUvs) {
+        const int tv =
+            addView(model, data, uvs.data(), uvs.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER);
+        prim.attributes["TEXCOORD_0"] = addAccessor(model, tv, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                                    TINYGLTF_TYPE_VEC2, mesh.positions.size());
+    }
     const int iv = addView(model, data, indices.data(), indices.size() * 4,
                            TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
     prim.indices = addAccessor(model, iv, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
@@ -135,9 +161,30 @@ QByteArray glbBytes(const SurfaceMesh& mesh, bool withNormals, QString* error) {
     tinygltf::Material paper;
     paper.name = "paper";
     paper.doubleSided = true; // a sheet is seen from both sides
-    paper.pbrMetallicRoughness.baseColorFactor = {0.93, 0.92, 0.88, 1.0};
+    paper.pbrMetallicRoughness.baseColorFactor = {look.color[0], look.color[1], look.color[2], 1.0};
     paper.pbrMetallicRoughness.metallicFactor = 0.0;
     paper.pbrMetallicRoughness.roughnessFactor = 0.9;
+    if (withUvs && !look.texturePng.isEmpty()) {
+        // The picture travels inside the file: a bufferView with a MIME type.
+        tinygltf::Image image;
+        image.name = "paper";
+        image.mimeType = "image/png";
+        image.bufferView = addView(model, data, look.texturePng.constData(),
+                                   static_cast<std::size_t>(look.texturePng.size()), 0);
+        model.images.push_back(image);
+        tinygltf::Sampler sampler;
+        sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+        sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+        sampler.wrapS = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+        sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+        model.samplers.push_back(sampler);
+        tinygltf::Texture texture;
+        texture.source = 0;
+        texture.sampler = 0;
+        model.textures.push_back(texture);
+        paper.pbrMetallicRoughness.baseColorTexture.index = 0;
+        paper.pbrMetallicRoughness.baseColorTexture.texCoord = 0;
+    }
     model.materials.push_back(paper);
     prim.material = 0;
 
@@ -180,7 +227,7 @@ bool meshFormatForPath(const QString& path, MeshFormat* format) {
 }
 
 bool writeSurface(const SurfaceMesh& mesh, const QString& path, MeshFormat format, bool withNormals,
-                  QString* error, const QStringList& inputs) {
+                  const SurfaceLook& look, QString* error, const QStringList& inputs) {
     QByteArray bytes;
     switch (format) {
     case MeshFormat::Obj:
@@ -190,7 +237,7 @@ bool writeSurface(const SurfaceMesh& mesh, const QString& path, MeshFormat forma
         bytes = plyBytes(mesh, withNormals);
         break;
     case MeshFormat::Glb:
-        bytes = glbBytes(mesh, withNormals, error);
+        bytes = glbBytes(mesh, withNormals, look, error);
         if (bytes.isEmpty()) return false;
         break;
     }

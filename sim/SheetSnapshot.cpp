@@ -12,6 +12,7 @@ SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds) {
     const auto& x = s.verts.x;
     SheetSnapshot snap;
     snap.x = x;
+    snap.X = s.verts.X;
     snap.tris = s.tris;
     snap.springKind = S.kind;
     snap.breakable = S.breakable;

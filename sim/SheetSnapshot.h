@@ -11,6 +11,7 @@ namespace pf {
 // data. The simulation thread publishes these; the renderer only reads them.
 struct SheetSnapshot {
     std::vector<Vec3> x;
+    std::vector<Vec2> X; // material coordinates: where each vertex lies on the flat sheet
     std::vector<Triangle> tris;
     std::vector<std::array<Index, 2>> springEnds;
     std::vector<SpringKind> springKind;

@@ -20,6 +20,9 @@ const std::vector<RenderCase>& renderCases() {
         // A coarse, strongly curved mesh, where §4.3 subdivision and σ matter most.
         {"bumps_coarse_sigma1", "compress", 0, "", 30, 40, 0.42, 1.0, 0, 4, 8, 0.03},
         {"bumps_coarse_sigma0", "compress", 0, "", 30, 40, 0.42, 0.0, 0, 4, 8, 0.03},
+        // The built-in paper grain through the material coordinates, close up.
+        {"press_grain_close", "press", 200, "", 20, 50, 0.30, 1.0, 0, 3, 0, 0.0,
+         PaperTexture::Grain},
     };
     return cases;
 }
@@ -52,6 +55,7 @@ RenderOptions optionsFor(const RenderCase& c) {
     o.sigma = c.sigma;
     o.overlays = c.overlays;
     o.subdivision = c.subdivision;
+    o.look.texture = c.texture;
     return o;
 }
 

@@ -21,6 +21,7 @@ struct RenderCase {
     int subdivision;
     int resolution = 0; // 0: the scene's own
     double bumps = 0.0; // amplitude (m) of a fixed bump field added after stepping
+    PaperTexture texture = PaperTexture::Plain;
 };
 
 const std::vector<RenderCase>& renderCases();

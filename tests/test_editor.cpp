@@ -3,6 +3,7 @@
 #include "ChartBrowser.h"
 #include "Language.h"
 #include "MainWindow.h"
+#include "PaperLookMenu.h"
 #include "ParameterPanel.h"
 #include "Picking.h"
 #include "QueuedSignalSpy.h"
@@ -33,6 +34,7 @@
 #include <QToolButton>
 #include <QUndoStack>
 #include <QtTest>
+#include <tiny_gltf.h>
 
 using namespace pf;
 
@@ -626,6 +628,103 @@ class TestEditor : public QObject {
         window->action("exportImage")->trigger();
         QVERIFY(lastError.isEmpty());
         QCOMPARE(asked, 0);
+    }
+
+    // View ▸ Paper: a colour and the paper grain reach the view, Export Image (on its
+    // worker thread) and Export Mesh (at the level asked, with uvs, colour and the
+    // texture in the GLB); a picture the user picks lies on the sheet; a file that is
+    // no picture is refused and changes nothing; the next session has the same look.
+    void thePaperLookReachesTheViewAndTheExports() {
+        QTemporaryDir dir;
+        window->chooseColor = [](const QColor&) { return QColor(200, 60, 50); };
+        window->action("look.color")->trigger();
+        window->action("look.grain")->trigger();
+        QVERIFY(window->action("look.grain")->isChecked());
+        const PaperLook shown = window->viewport()->renderOptions().look;
+        QCOMPARE(shown.texture, PaperTexture::Grain);
+        QCOMPARE(paperColorText(shown.color), QStringLiteral("#c83c32"));
+
+        int askedLevel = -1;
+        window->chooseMeshSubdivision = [&](int current) {
+            askedLevel = current;
+            return 1;
+        };
+        nextFile = dir.filePath(QStringLiteral("sheet.glb"));
+        window->action("exportMesh")->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        QCOMPARE(askedLevel, window->viewport()->renderOptions().subdivision);
+        tinygltf::Model model;
+        tinygltf::TinyGLTF loader;
+        std::string err, warn;
+        QVERIFY2(loader.LoadBinaryFromFile(&model, &err, &warn, nextFile.toStdString()),
+                 err.c_str());
+        const auto& prim = model.meshes[0].primitives[0];
+        QCOMPARE(model.accessors[prim.indices].count,
+                 3 * 4 * window->viewport()->snapshot()->tris.size()); // level 1: 4 each
+        QVERIFY(prim.attributes.count("TEXCOORD_0"));
+        QCOMPARE(model.images.size(), std::size_t(1));
+        QCOMPARE(model.materials[0].pbrMetallicRoughness.baseColorFactor[0], double(200 / 255.f));
+        // Cancelled: no file asked for.
+        window->chooseMeshSubdivision = [](int) { return -1; };
+        int asked = 0;
+        window->chooseFile = [&](MainWindow::FileDialog) {
+            ++asked;
+            return QString();
+        };
+        window->action("exportMesh")->trigger();
+        QCOMPARE(asked, 0);
+
+        // Export Image: the picture is the reddish paper.
+        nextFile = dir.filePath(QStringLiteral("sheet.png"));
+        window->chooseFile = [this](MainWindow::FileDialog) { return nextFile; };
+        window->chooseImageSize = [] { return QSize(320, 200); };
+        window->action("exportImage")->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        const QImage picture(nextFile);
+        QCOMPARE(picture.size(), QSize(320, 200));
+        int reddish = 0;
+        for (int y = 0; y < picture.height(); ++y)
+            for (int x = 0; x < picture.width(); ++x) {
+                const QColor c = picture.pixelColor(x, y);
+                reddish += c.red() > c.green() + 50 ? 1 : 0;
+            }
+        QVERIFY2(reddish > 2000, qPrintable(QString::number(reddish)));
+
+        // A picture from a file, then a file that is none.
+        QImage stripes(40, 30, QImage::Format_RGB32);
+        stripes.fill(Qt::blue);
+        const QString picturePath = dir.filePath(QStringLiteral("stripes.png"));
+        QVERIFY(stripes.save(picturePath));
+        window->chooseFile = [&](MainWindow::FileDialog kind) {
+            return kind == MainWindow::FileDialog::PaperImage ? picturePath : QString();
+        };
+        window->action("look.image")->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        const PaperLook withPicture = window->viewport()->renderOptions().look;
+        QCOMPARE(withPicture.texture, PaperTexture::Image);
+        QCOMPARE(withPicture.image.size(), QSize(40, 30));
+        QVERIFY(window->action("look.image")->text().contains(QStringLiteral("stripes.png")));
+        const QString notAPicture = dir.filePath(QStringLiteral("notes.png"));
+        QFile f(notAPicture);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("this is text, not a PNG");
+        f.close();
+        window->chooseFile = [&](MainWindow::FileDialog) { return notAPicture; };
+        window->action("look.image")->trigger();
+        QVERIFY(lastError.contains(QStringLiteral("notes.png")));
+        QVERIFY(window->viewport()->renderOptions().look.image.cacheKey() ==
+                withPicture.image.cacheKey());
+        QVERIFY(window->action("look.image")->isChecked());
+
+        // The next session starts with the same look.
+        lastError.clear();
+        makeWindow();
+        const PaperLook restored = window->viewport()->renderOptions().look;
+        QCOMPARE(restored.texture, PaperTexture::Image);
+        QCOMPARE(restored.image.size(), QSize(40, 30));
+        QCOMPARE(paperColorText(restored.color), QStringLiteral("#c83c32"));
+        QVERIFY(window->action("look.image")->isChecked());
+        QSettings().remove(QStringLiteral("look")); // the other tests see plain paper
     }
 
     // Tools ▸ Grab: the point under the cursor is picked up and follows the cursor at the

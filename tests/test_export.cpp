@@ -1,4 +1,5 @@
 // Exported OBJ, PLY and GLB files re-read by independent readers.
+#include "PaperLook.h"
 #include "Scenes.h"
 #include "Simulation.h"
 #include "Subdivision.h"
@@ -41,7 +42,7 @@ class TestExport : public QObject {
         const SurfaceMesh m = crumpledSurface(2);
         const QString path = dir.filePath(QStringLiteral("sheet.obj"));
         QString error;
-        QVERIFY2(writeSurface(m, path, MeshFormat::Obj, true, &error), qPrintable(error));
+        QVERIFY2(writeSurface(m, path, MeshFormat::Obj, true, {}, &error), qPrintable(error));
         tinyobj::ObjReader reader;
         QVERIFY(reader.ParseFromFile(path.toStdString()));
         QCOMPARE(reader.GetAttrib().vertices.size(), 3 * m.positions.size());
@@ -56,7 +57,7 @@ class TestExport : public QObject {
         const SurfaceMesh m = crumpledSurface(2);
         const QString path = dir.filePath(QStringLiteral("sheet.ply"));
         QString error;
-        QVERIFY2(writeSurface(m, path, MeshFormat::Ply, true, &error), qPrintable(error));
+        QVERIFY2(writeSurface(m, path, MeshFormat::Ply, true, {}, &error), qPrintable(error));
         Assimp::Importer importer;
         const aiScene* scene = importer.ReadFile(path.toStdString(), 0);
         QVERIFY2(scene, importer.GetErrorString());
@@ -70,7 +71,7 @@ class TestExport : public QObject {
         const SurfaceMesh m = crumpledSurface(3);
         const QString path = dir.filePath(QStringLiteral("sheet.glb"));
         QString error;
-        QVERIFY2(writeSurface(m, path, MeshFormat::Glb, true, &error), qPrintable(error));
+        QVERIFY2(writeSurface(m, path, MeshFormat::Glb, true, {}, &error), qPrintable(error));
         tinygltf::Model model;
         tinygltf::TinyGLTF loader;
         std::string err, warn;
@@ -83,10 +84,107 @@ class TestExport : public QObject {
         QVERIFY(model.materials[0].doubleSided);
     }
 
+    // vt is the material coordinate over the sheet (SurfaceMesh::uvs, checked against
+    // the sheet's rectangle in test_subdivision), v flipped for OBJ's bottom-left
+    // origin; each corner's uv index is its vertex's.
+    void objCarriesTheMaterialCoordinatesAsUvs() {
+        const SurfaceMesh m = crumpledSurface(2);
+        for (const bool normals : {true, false}) {
+            const QString path = dir.filePath(QStringLiteral("uv.obj"));
+            QVERIFY(writeSurface(m, path, MeshFormat::Obj, normals, {}, nullptr));
+            tinyobj::ObjReader reader;
+            QVERIFY(reader.ParseFromFile(path.toStdString()));
+            const auto& vt = reader.GetAttrib().texcoords;
+            QCOMPARE(vt.size(), 2 * m.uvs.size());
+            for (std::size_t i = 0; i < m.uvs.size(); ++i) {
+                QVERIFY(std::abs(vt[2 * i] - m.uvs[i].x()) < 1e-7);
+                QVERIFY(std::abs(vt[2 * i + 1] - (1.0 - m.uvs[i].y())) < 1e-7);
+            }
+            for (const tinyobj::index_t& corner : reader.GetShapes()[0].mesh.indices) {
+                QCOMPARE(corner.texcoord_index, corner.vertex_index);
+                QCOMPARE(corner.normal_index, normals ? corner.vertex_index : -1);
+            }
+        }
+    }
+
+    void plyCarriesTheMaterialCoordinatesAsUvs() {
+        const SurfaceMesh m = crumpledSurface(1);
+        const QString path = dir.filePath(QStringLiteral("uv.ply"));
+        QVERIFY(writeSurface(m, path, MeshFormat::Ply, true, {}, nullptr));
+        Assimp::Importer importer;
+        const aiScene* scene = importer.ReadFile(path.toStdString(), 0);
+        QVERIFY2(scene, importer.GetErrorString());
+        const aiMesh* mesh = scene->mMeshes[0];
+        QVERIFY(mesh->HasTextureCoords(0));
+        QCOMPARE(std::size_t(mesh->mNumVertices), m.uvs.size());
+        for (std::size_t i = 0; i < m.uvs.size(); ++i) {
+            QVERIFY(std::abs(mesh->mTextureCoords[0][i].x - m.uvs[i].x()) < 1e-6);
+            QVERIFY(std::abs(mesh->mTextureCoords[0][i].y - (1.0 - m.uvs[i].y())) < 1e-6);
+        }
+    }
+
+    // A GLB carries the look: uvs as the mesh holds them (glTF's origin is the image's
+    // top-left), the colour as baseColorFactor, and the texture inside the file, the
+    // same pixels as the paper grain drawn in the view.
+    void glbCarriesUvsColourAndTexture() {
+        const SurfaceMesh m = crumpledSurface(2);
+        PaperLook look;
+        look.color = {0.8f, 0.3f, 0.2f};
+        look.texture = PaperTexture::Grain;
+        const QString path = dir.filePath(QStringLiteral("look.glb"));
+        QString error;
+        QVERIFY2(writeSurface(m, path, MeshFormat::Glb, true, surfaceLook(look), &error),
+                 qPrintable(error));
+        tinygltf::Model model;
+        tinygltf::TinyGLTF loader;
+        std::string err, warn;
+        QVERIFY2(loader.LoadBinaryFromFile(&model, &err, &warn, path.toStdString()), err.c_str());
+        const auto& prim = model.meshes[0].primitives[0];
+        const tinygltf::Accessor& uv = model.accessors[prim.attributes.at("TEXCOORD_0")];
+        QCOMPARE(uv.count, m.uvs.size());
+        QCOMPARE(uv.type, TINYGLTF_TYPE_VEC2);
+        const tinygltf::BufferView& view = model.bufferViews[uv.bufferView];
+        const auto* data = reinterpret_cast<const float*>(model.buffers[view.buffer].data.data() +
+                                                          view.byteOffset + uv.byteOffset);
+        for (std::size_t i = 0; i < m.uvs.size(); ++i) {
+            QCOMPARE(data[2 * i], float(m.uvs[i].x()));
+            QCOMPARE(data[2 * i + 1], float(m.uvs[i].y()));
+        }
+        const auto& pbr = model.materials[0].pbrMetallicRoughness;
+        QCOMPARE(pbr.baseColorFactor[0], double(0.8f));
+        QCOMPARE(pbr.baseColorFactor[1], double(0.3f));
+        QCOMPARE(pbr.baseColorFactor[2], double(0.2f));
+        QCOMPARE(pbr.baseColorTexture.index, 0);
+        QCOMPARE(pbr.baseColorTexture.texCoord, 0);
+        QCOMPARE(model.images.size(), std::size_t(1));
+        const tinygltf::Image& image = model.images[0];
+        QCOMPARE(image.mimeType, std::string("image/png"));
+        const tinygltf::BufferView& iv = model.bufferViews[image.bufferView];
+        const QImage stored = QImage::fromData(
+            reinterpret_cast<const uchar*>(model.buffers[0].data.data() + iv.byteOffset),
+            static_cast<int>(iv.byteLength), "PNG");
+        const QImage grain = paperGrainImage();
+        QCOMPARE(stored.size(), grain.size());
+        QVERIFY(stored.convertToFormat(QImage::Format_RGBA8888) == grain);
+    }
+
+    void aPlainLookWritesNoImage() {
+        const SurfaceMesh m = crumpledSurface(0);
+        const QString path = dir.filePath(QStringLiteral("plain.glb"));
+        QVERIFY(writeSurface(m, path, MeshFormat::Glb, true, surfaceLook(PaperLook{}), nullptr));
+        tinygltf::Model model;
+        tinygltf::TinyGLTF loader;
+        std::string err, warn;
+        QVERIFY(loader.LoadBinaryFromFile(&model, &err, &warn, path.toStdString()));
+        QVERIFY(model.images.empty());
+        QCOMPARE(model.materials[0].pbrMetallicRoughness.baseColorTexture.index, -1);
+        QVERIFY(model.meshes[0].primitives[0].attributes.count("TEXCOORD_0"));
+    }
+
     void withoutNormals() {
         const SurfaceMesh m = crumpledSurface(1);
         const QString path = dir.filePath(QStringLiteral("plain.obj"));
-        QVERIFY(writeSurface(m, path, MeshFormat::Obj, false, nullptr));
+        QVERIFY(writeSurface(m, path, MeshFormat::Obj, false, {}, nullptr));
         tinyobj::ObjReader reader;
         QVERIFY(reader.ParseFromFile(path.toStdString()));
         QVERIFY(reader.GetAttrib().normals.empty());

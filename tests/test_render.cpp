@@ -154,6 +154,18 @@ class TestRender : public QObject {
         QVERIFY(d.differingFraction > 2 * kThreshold);
     }
 
+    // The grain baseline means something only if the grain is beyond the tolerance: the
+    // same picture on plain paper fails it.
+    void theGrainIsBeyondTheBaselineTolerance() {
+        const test::RenderCase& grain = test::renderCases().back();
+        QCOMPARE(grain.texture, PaperTexture::Grain);
+        test::RenderCase plain = grain;
+        plain.texture = PaperTexture::Plain;
+        const ImageDifference d = compareImages(draw(grain), draw(plain));
+        qInfo("grain vs plain: %.2f %% of pixels differ", 100 * d.differingFraction);
+        QVERIFY(d.differingFraction > 2 * kThreshold);
+    }
+
     void eachOverlayChangesThePicture_data() {
         QTest::addColumn<unsigned>("overlay");
         QTest::newRow("springs") << unsigned(OverlaySpringKinds);
@@ -181,6 +193,57 @@ class TestRender : public QObject {
         const QRgb corner = image.pixel(5, 5);
         QVERIFY2(qGray(centre) > 200, qPrintable(QString::number(qGray(centre))));
         QVERIFY(qGray(centre) > qGray(corner) + 30);
+    }
+
+    // A picture lies on the sheet as printed on it: its left half on the sheet's -x
+    // side, its top band on the -z side (far, from the front), seen from the top; its
+    // colours multiplied by the paper colour. Pixels at projected sheet vertices.
+    void aPictureLiesOnTheSheetAsPrinted() {
+        test::RenderCase c = test::renderCases()[0];
+        c.steps = 0;
+        c.view = "top";
+        const SheetSnapshot snap = test::snapshotFor(c);
+        const OrbitCamera camera = test::cameraFor(c, snap, double(kWidth) / kHeight);
+        QImage picture(64, 64, QImage::Format_RGBA8888);
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x)
+                picture.setPixelColor(x, y,
+                                      y < 16   ? QColor(0, 200, 0)
+                                      : x < 32 ? QColor(220, 0, 0)
+                                               : QColor(0, 0, 220));
+        RenderOptions options = test::optionsFor(c);
+        options.look.texture = PaperTexture::Image;
+        options.look.image = picture;
+        options.look.color = {1.0f, 1.0f, 1.0f};
+        options.sphere = false; // the tool stands over the middle
+        const QImage image = renderer->render(snap, camera, options);
+        const Mat4 viewProj = camera.projection(double(kWidth) / kHeight) * camera.view();
+        // The material point at (u, v) over the sheet, on the flat sheet.
+        auto colourIn = [&](const QImage& img, double u, double v) {
+            const Vec3 p(-0.105 + 0.210 * u, snap.x[0].y(), -0.1485 + 0.297 * v);
+            const Eigen::Vector4d clip = viewProj * p.homogeneous();
+            const double px = (clip.x() / clip.w() + 1) / 2 * kWidth;
+            const double py = (1 - clip.y() / clip.w()) / 2 * kHeight;
+            return img.pixelColor(int(px), int(py));
+        };
+        auto colourAt = [&](double u, double v) { return colourIn(image, u, v); };
+        auto dominant = [](const QColor& q) {
+            const int r = q.red(), g = q.green(), b = q.blue();
+            return r > g + 60 && r > b + 60   ? 'r'
+                   : g > r + 60 && g > b + 60 ? 'g'
+                   : b > r + 60 && b > g + 60 ? 'b'
+                                              : '?';
+        };
+        QCOMPARE(dominant(colourAt(0.25, 0.6)), 'r');
+        QCOMPARE(dominant(colourAt(0.75, 0.6)), 'b');
+        QVERIFY2(dominant(colourAt(0.5, 0.1)) == 'g', qPrintable(colourAt(0.5, 0.1).name()));
+        QCOMPARE(dominant(colourAt(0.1, 0.9)), 'r');
+        // The paper colour multiplies it: on blue paper the red half goes dark.
+        options.look.color = {0.1f, 0.1f, 1.0f};
+        const QImage tinted = renderer->render(snap, camera, options);
+        const QColor wasRed = colourIn(tinted, 0.25, 0.6), stillBlue = colourIn(tinted, 0.75, 0.6);
+        QVERIFY2(wasRed.red() < 60, qPrintable(wasRed.name()));
+        QCOMPARE(dominant(stillBlue), 'b');
     }
 
     // Pins are marked in pin red where the options ask for them (the editor), and not

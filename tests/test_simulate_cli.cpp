@@ -165,6 +165,29 @@ class TestSimulateCli : public QObject {
                                "--subdiv", "9"})
                      .exitCode,
                  1);
+
+        // The look: the grain travels inside the GLB as a PNG; a picture is an input,
+        // so an output over it is refused before any work and the picture survives.
+        const QString looked = dir.filePath(QStringLiteral("look.glb"));
+        QCOMPARE(runPaperfold({"export", "--load", sheet, "--output", looked, "--paper-color",
+                               "ivory", "--texture", "grain"})
+                     .exitCode,
+                 0);
+        QFile glb(looked);
+        QVERIFY(glb.open(QIODevice::ReadOnly));
+        const QByteArray bytes = glb.readAll();
+        QVERIFY(bytes.contains("\"image/png\""));
+        QVERIFY(bytes.contains("\"TEXCOORD_0\""));
+        const QString picture = dir.filePath(QStringLiteral("picture.png"));
+        QImage stripes(32, 32, QImage::Format_RGB32);
+        stripes.fill(Qt::red);
+        QVERIFY(stripes.save(picture));
+        const Result over = runPaperfold({"render", "--scene", "press", "--size", "64x64",
+                                          "--texture", picture, "--output", picture},
+                                         true);
+        QCOMPARE(over.exitCode, 1);
+        QCOMPARE(QImage(picture).pixelColor(5, 5), QColor(Qt::red));
+        QCOMPARE(QImage(picture).size(), QSize(32, 32));
     }
 
     void renderWritesAPngWithNoDisplay() {
@@ -229,6 +252,11 @@ class TestSimulateCli : public QObject {
         QTest::newRow("bad overlay")
             << QStringList{"render", "--overlay", "springs,glitter", "--output", "a.png"}
             << "glitter";
+        QTest::newRow("bad paper colour")
+            << QStringList{"render", "--paper-color", "glitter", "--output", "a.png"} << "glitter";
+        QTest::newRow("missing texture")
+            << QStringList{"render", "--texture", "/nonexistent/paper.png", "--output", "a.png"}
+            << "--texture";
         QTest::newRow("bad subdiv")
             << QStringList{"render", "--subdiv", "7", "--output", "a.png"} << "subdiv";
         QTest::newRow("sequence without pattern")

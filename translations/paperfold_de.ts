@@ -299,6 +299,22 @@
         <source>Size in pixels (width x height):</source>
         <translation>Größe in Pixeln (Breite x Höhe):</translation>
     </message>
+    <message>
+        <source>Picture for the Paper</source>
+        <translation>Bild für das Papier</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.bmp *.webp)</source>
+        <translation>Bilder (*.png *.jpg *.jpeg *.bmp *.webp)</translation>
+    </message>
+    <message>
+        <source>Paper Colour</source>
+        <translation>Papierfarbe</translation>
+    </message>
+    <message>
+        <source>Subdivision level: 0 writes the simulation mesh; each level splits every triangle in four along the paper&apos;s curved surface.</source>
+        <translation>Unterteilungsstufe: 0 schreibt das Simulationsnetz; jede Stufe teilt jedes Dreieck entlang der gekrümmten Papierfläche in vier.</translation>
+    </message>
 </context>
 <context>
     <name>pf::HelpText</name>
@@ -472,6 +488,53 @@
     <message>
         <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
         <translation>Angehalten: Das Greifen wirkt, sobald die Simulation läuft (Leertaste oder Schritt).</translation>
+    </message>
+    <message>
+        <source>Rendering the image (%1 x %2)…</source>
+        <translation>Das Bild wird gerendert (%1 x %2)…</translation>
+    </message>
+    <message>
+        <source>Export Image</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+</context>
+<context>
+    <name>pf::PaperLookMenu</name>
+    <message>
+        <source>Could not use the picture as paper: %1</source>
+        <translation>Das Bild kann nicht als Papier verwendet werden: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Paper</source>
+        <translation>&amp;Papier</translation>
+    </message>
+    <message>
+        <source>Paper &amp;Colour…</source>
+        <translation>Papier&amp;farbe…</translation>
+    </message>
+    <message>
+        <source>&amp;Plain</source>
+        <translation>&amp;Schlicht</translation>
+    </message>
+    <message>
+        <source>Paper &amp;Grain</source>
+        <translation>Papier&amp;struktur</translation>
+    </message>
+    <message>
+        <source>P&amp;icture: %1…</source>
+        <translation>&amp;Bild: %1…</translation>
+    </message>
+    <message>
+        <source>P&amp;icture…</source>
+        <translation>&amp;Bild…</translation>
+    </message>
+    <message>
+        <source>Print a picture over the whole sheet</source>
+        <translation>Ein Bild über das ganze Blatt drucken</translation>
     </message>
 </context>
 <context>

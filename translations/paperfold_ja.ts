@@ -295,6 +295,22 @@
         <source>Size in pixels (width x height):</source>
         <translation>ピクセル単位のサイズ（幅 x 高さ）：</translation>
     </message>
+    <message>
+        <source>Picture for the Paper</source>
+        <translation>紙に使う画像</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.bmp *.webp)</source>
+        <translation>画像 (*.png *.jpg *.jpeg *.bmp *.webp)</translation>
+    </message>
+    <message>
+        <source>Paper Colour</source>
+        <translation>紙の色</translation>
+    </message>
+    <message>
+        <source>Subdivision level: 0 writes the simulation mesh; each level splits every triangle in four along the paper&apos;s curved surface.</source>
+        <translation>細分割レベル: 0 はシミュレーションのメッシュをそのまま書き出します。レベルが1つ上がるごとに、各三角形を紙の曲面に沿って4つに分割します。</translation>
+    </message>
 </context>
 <context>
     <name>pf::HelpText</name>
@@ -468,6 +484,53 @@
     <message>
         <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
         <translation>一時停止中：つかむ操作はシミュレーションの再生後に反映されます（Space またはステップ）。</translation>
+    </message>
+    <message>
+        <source>Rendering the image (%1 x %2)…</source>
+        <translation>画像をレンダリングしています (%1 x %2)…</translation>
+    </message>
+    <message>
+        <source>Export Image</source>
+        <translation>画像を書き出す</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 を書き出しました</translation>
+    </message>
+</context>
+<context>
+    <name>pf::PaperLookMenu</name>
+    <message>
+        <source>Could not use the picture as paper: %1</source>
+        <translation>この画像は紙に使えません: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Paper</source>
+        <translation>紙(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Paper &amp;Colour…</source>
+        <translation>紙の色(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>&amp;Plain</source>
+        <translation>無地(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Paper &amp;Grain</source>
+        <translation>紙の地合い(&amp;G)</translation>
+    </message>
+    <message>
+        <source>P&amp;icture: %1…</source>
+        <translation>画像(&amp;I): %1…</translation>
+    </message>
+    <message>
+        <source>P&amp;icture…</source>
+        <translation>画像(&amp;I)…</translation>
+    </message>
+    <message>
+        <source>Print a picture over the whole sheet</source>
+        <translation>シート全体に画像を印刷します</translation>
     </message>
 </context>
 <context>

@@ -295,6 +295,22 @@
         <source>Size in pixels (width x height):</source>
         <translation>픽셀 크기 (너비 x 높이):</translation>
     </message>
+    <message>
+        <source>Picture for the Paper</source>
+        <translation>종이에 쓸 그림</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.bmp *.webp)</source>
+        <translation>이미지 (*.png *.jpg *.jpeg *.bmp *.webp)</translation>
+    </message>
+    <message>
+        <source>Paper Colour</source>
+        <translation>종이 색</translation>
+    </message>
+    <message>
+        <source>Subdivision level: 0 writes the simulation mesh; each level splits every triangle in four along the paper&apos;s curved surface.</source>
+        <translation>세분 단계: 0은 시뮬레이션 메시를 그대로 저장합니다. 단계마다 모든 삼각형을 종이의 곡면을 따라 넷으로 나눕니다.</translation>
+    </message>
 </context>
 <context>
     <name>pf::HelpText</name>
@@ -468,6 +484,53 @@
     <message>
         <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
         <translation>일시 정지됨: 잡기는 시뮬레이션이 재생되면 적용됩니다 (Space 또는 한 단계).</translation>
+    </message>
+    <message>
+        <source>Rendering the image (%1 x %2)…</source>
+        <translation>이미지를 렌더링하는 중 (%1 x %2)…</translation>
+    </message>
+    <message>
+        <source>Export Image</source>
+        <translation>이미지 내보내기</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 내보냄</translation>
+    </message>
+</context>
+<context>
+    <name>pf::PaperLookMenu</name>
+    <message>
+        <source>Could not use the picture as paper: %1</source>
+        <translation>이 그림을 종이로 쓸 수 없습니다: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Paper</source>
+        <translation>종이(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Paper &amp;Colour…</source>
+        <translation>종이 색(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>&amp;Plain</source>
+        <translation>무늬 없음(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Paper &amp;Grain</source>
+        <translation>종이 결(&amp;G)</translation>
+    </message>
+    <message>
+        <source>P&amp;icture: %1…</source>
+        <translation>그림(&amp;I): %1…</translation>
+    </message>
+    <message>
+        <source>P&amp;icture…</source>
+        <translation>그림(&amp;I)…</translation>
+    </message>
+    <message>
+        <source>Print a picture over the whole sheet</source>
+        <translation>시트 전체에 그림을 인쇄합니다</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,8 @@
 #include "EditorDialogs.h"
 
+#include "Subdivision.h"
+
+#include <QColorDialog>
 #include <QFileDialog>
 #include <QInputDialog>
 #include <algorithm>
@@ -19,6 +22,9 @@ QString EditorDialogs::chooseFile(QWidget* parent, FileDialog kind, const QStrin
     case FileDialog::ExportMesh:
         return QFileDialog::getSaveFileName(parent, tr("Export Mesh"), QString(),
                                             tr("Meshes (*.obj *.ply *.glb)"));
+    case FileDialog::PaperImage:
+        return QFileDialog::getOpenFileName(parent, tr("Picture for the Paper"), QString(),
+                                            tr("Images (*.png *.jpg *.jpeg *.bmp *.webp)"));
     case FileDialog::SaveRecording:
         return QFileDialog::getSaveFileName(parent, tr("Save Recording"), QString(),
                                             tr("PaperFold recordings (*.paperrec)"));
@@ -46,6 +52,20 @@ QSize EditorDialogs::chooseImageSize(QWidget* parent) {
     if (wh.size() != 2) return QSize(0, 0); // unreadable: the window says what it expects
     // A negative side would make an invalid QSize, which means "cancelled".
     return QSize(std::max(0, wh[0].trimmed().toInt()), std::max(0, wh[1].trimmed().toInt()));
+}
+
+QColor EditorDialogs::chooseColor(QWidget* parent, const QColor& current) {
+    return QColorDialog::getColor(current, parent, tr("Paper Colour"));
+}
+
+int EditorDialogs::chooseMeshSubdivision(QWidget* parent, int current) {
+    bool ok = false;
+    const int level = QInputDialog::getInt(
+        parent, tr("Export Mesh"),
+        tr("Subdivision level: 0 writes the simulation mesh; each level splits every "
+           "triangle in four along the paper's curved surface."),
+        current, 0, kMaxSubdivisionLevel, 1, &ok);
+    return ok ? level : -1;
 }
 
 } // namespace pf

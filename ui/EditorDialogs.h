@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QColor>
 #include <QCoreApplication>
 #include <QMessageBox>
 #include <QSize>
@@ -9,7 +10,7 @@ class QWidget;
 
 namespace pf {
 
-enum class FileDialog { Open, Save, ExportImage, ExportMesh, SaveRecording };
+enum class FileDialog { Open, Save, ExportImage, ExportMesh, SaveRecording, PaperImage };
 
 // The questions the editor asks, as standard dialogs over `parent`. The window calls them
 // through functions a test can replace with scripted answers.
@@ -23,6 +24,10 @@ class EditorDialogs {
     static QMessageBox::StandardButton askToSave(QWidget* parent);
     // "width x height": an invalid QSize when cancelled, 0 x 0 when unreadable.
     static QSize chooseImageSize(QWidget* parent);
+    // An invalid colour when cancelled.
+    static QColor chooseColor(QWidget* parent, const QColor& current);
+    // The subdivision level for Export Mesh, -1 when cancelled.
+    static int chooseMeshSubdivision(QWidget* parent, int current);
 };
 
 } // namespace pf

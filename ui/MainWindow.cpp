@@ -8,6 +8,7 @@
 #include "HelpText.h"
 #include "Language.h"
 #include "OffscreenRenderer.h"
+#include "PaperLookMenu.h"
 #include "ParameterPanel.h"
 #include "RecentFiles.h"
 #include "RecordingFile.h"
@@ -27,11 +28,14 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QEventLoop>
 #include <QFileInfo>
 #include <QMenuBar>
+#include <QProgressDialog>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
+#include <QThread>
 #include <QToolBar>
 #include <QUndoStack>
 #include <QUndoView>
@@ -70,6 +74,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     showError = [this](const QString& message) { EditorDialogs::showError(this, message); };
     askToSave = [this] { return EditorDialogs::askToSave(this); };
     chooseImageSize = [this] { return EditorDialogs::chooseImageSize(this); };
+    chooseColor = [this](const QColor& current) {
+        return EditorDialogs::chooseColor(this, current);
+    };
+    chooseMeshSubdivision = [this](int current) {
+        return EditorDialogs::chooseMeshSubdivision(this, current);
+    };
 
     createActions();
     createMenus();
@@ -312,6 +322,18 @@ void MainWindow::createActions() {
             [this] { HelpText::showMouseAndKeys(this); });
     connect(make("about"), &QAction::triggered, this, [this] { HelpText::showAbout(this); });
     languageGroup_ = createLanguageActions(this);
+
+    paperLook_ = new PaperLookMenu(this);
+    paperLook_->chooseColor = [this](const QColor& c) { return chooseColor(c); };
+    paperLook_->chooseImage = [this] { return chooseFile(FileDialog::PaperImage); };
+    paperLook_->showError = [this](const QString& m) { showError(m); };
+    auto showLook = [this](const PaperLook& look) {
+        RenderOptions o = viewport_->renderOptions();
+        o.look = look;
+        viewport_->setRenderOptions(o);
+    };
+    connect(paperLook_, &PaperLookMenu::lookChanged, this, showLook);
+    showLook(paperLook_->look());
 }
 
 void MainWindow::createMenus() {
@@ -346,6 +368,7 @@ void MainWindow::createMenus() {
     for (const char* name : {"view.top", "view.front", "view.iso", "view.fit"})
         viewMenu_->addAction(action(name));
     viewMenu_->addSeparator();
+    viewMenu_->addMenu(paperLook_->menu());
     languageMenu_ = viewMenu_->addMenu(QString());
     languageMenu_->addActions(languageGroup_->actions());
 
@@ -406,6 +429,7 @@ void MainWindow::retranslate() {
     simMenu_->setTitle(tr("&Simulation"));
     toolMenu_->setTitle(tr("&Tools"));
     helpMenu_->setTitle(tr("&Help"));
+    paperLook_->retranslate();
     toolBar_->setWindowTitle(tr("Main toolbar"));
     panelDock_->setWindowTitle(tr("Parameters"));
     historyDock_->setWindowTitle(tr("History"));
@@ -548,7 +572,8 @@ bool MainWindow::toolPressed() const {
 }
 
 void MainWindow::exportImage() {
-    auto snap = viewport_->snapshot();
+    // Held for the worker: new frames replace the viewport's while it renders.
+    const std::shared_ptr<const SheetSnapshot> snap = viewport_->sharedSnapshot();
     if (!snap) return;
     const QSize size = chooseImageSize();
     if (!size.isValid()) return; // cancelled
@@ -561,17 +586,41 @@ void MainWindow::exportImage() {
     }
     const QString path = chooseFile(FileDialog::ExportImage);
     if (path.isEmpty()) return;
-    QString error;
     RenderOptions picture = viewport_->renderOptions();
     picture.pins = false; // editing marks, not the artwork
-    if (!exportSnapshotImage(*snap, viewport_->camera(), picture, size.width(), size.height(), path,
-                             &error))
+    // A large picture takes seconds in software: it renders on a thread of its own
+    // (OSMesa needs no window) while a dialog says so and the window stays drawn.
+    QString error;
+    bool written = false;
+    const OrbitCamera camera = viewport_->camera();
+    std::unique_ptr<QThread> worker(QThread::create([&] {
+        written =
+            exportSnapshotImage(*snap, camera, picture, size.width(), size.height(), path, &error);
+    }));
+    QProgressDialog progress(
+        tr("Rendering the image (%1 x %2)…").arg(size.width()).arg(size.height()), QString(), 0, 0,
+        this);
+    progress.setWindowTitle(tr("Export Image"));
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(400); // no flash for a small image
+    QEventLoop wait;
+    connect(worker.get(), &QThread::finished, &wait, &QEventLoop::quit);
+    worker->start();
+    wait.exec();
+    worker->wait();
+    progress.reset();
+    if (written)
+        statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 5000);
+    else
         showError(tr("Could not export the image: %1").arg(error));
 }
 
 void MainWindow::exportMesh() {
     auto snap = viewport_->snapshot();
     if (!snap) return;
+    RenderOptions surface = viewport_->renderOptions();
+    surface.subdivision = chooseMeshSubdivision(surface.subdivision);
+    if (surface.subdivision < 0) return; // cancelled
     const QString path = chooseFile(FileDialog::ExportMesh);
     if (path.isEmpty()) return;
     MeshFormat format;
@@ -580,7 +629,9 @@ void MainWindow::exportMesh() {
         return;
     }
     QString error;
-    if (!exportSnapshotMesh(*snap, viewport_->renderOptions(), path, format, &error))
+    if (exportSnapshotMesh(*snap, surface, path, format, &error))
+        statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 5000);
+    else
         showError(tr("Could not export the mesh: %1").arg(error));
 }
 

@@ -25,6 +25,7 @@ namespace pf {
 
 class ChartBrowser;
 class EditorParameters;
+class PaperLookMenu;
 class ParameterPanel;
 class RecentFiles;
 class SolverPanel;
@@ -50,6 +51,10 @@ class MainWindow : public QMainWindow {
     std::function<void(const QString&)> showError;
     std::function<QMessageBox::StandardButton()> askToSave;
     std::function<QSize()> chooseImageSize;
+    // An invalid colour when cancelled.
+    std::function<QColor(const QColor&)> chooseColor;
+    // Export Mesh's subdivision level (0..kMaxSubdivisionLevel), -1 when cancelled.
+    std::function<int(int current)> chooseMeshSubdivision;
 
     // Actions, for tests and the toolbar.
     QAction* action(const char* name) const;
@@ -57,6 +62,7 @@ class MainWindow : public QMainWindow {
     SimulationThread* simulation() const { return sim_.get(); }
     Viewport* viewport() const { return viewport_; }
     ParameterPanel* panel() const { return panel_; }
+    PaperLookMenu* paperLook() const { return paperLook_; }
     SolverPanel* solverPanel() const { return solver_; }
     // Open Latest Chart (the Solver dock's button).
     ChartBrowser* charts() const { return charts_; }
@@ -95,6 +101,7 @@ class MainWindow : public QMainWindow {
     Viewport* viewport_ = nullptr;
     ViewportInput* input_ = nullptr;
     ParameterPanel* panel_ = nullptr;
+    PaperLookMenu* paperLook_ = nullptr;
     SolverPanel* solver_ = nullptr;
     EditorParameters* parameters_ = nullptr;
     ChartBrowser* charts_ = nullptr;

@@ -30,6 +30,8 @@ class Viewport : public QOpenGLWidget {
 
     void setSnapshot(std::shared_ptr<const SheetSnapshot> snapshot);
     const SheetSnapshot* snapshot() const { return snapshot_.get(); }
+    // The same, kept alive by the caller: for work that outlives the next frame.
+    std::shared_ptr<const SheetSnapshot> sharedSnapshot() const { return snapshot_; }
     void setCamera(const OrbitCamera& camera);
     const OrbitCamera& camera() const { return camera_; }
     void setRenderOptions(const RenderOptions& options);

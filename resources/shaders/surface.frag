@@ -5,9 +5,12 @@
 in vec3 vPos;
 in vec3 vNormal;
 in vec4 vColor;
+in vec2 vUv;
 uniform vec3 uEye;
 uniform vec3 uBaseColor;
 uniform float uAlpha;
+uniform sampler2D uTexture;
+uniform float uTextured; // 1: the colour is multiplied by the paper's texture
 uniform float uFacet;
 out vec4 fragColor;
 void main() {
@@ -27,7 +30,9 @@ void main() {
     vec3 halfway = normalize(key + view);
     float spec = pow(max(dot(n, halfway), 0.0), 24.0) * 0.06;
 
-    vec3 base = mix(uBaseColor, vColor.rgb, vColor.a);
+    vec3 paper = uBaseColor;
+    if (uTextured > 0.5) paper *= texture(uTexture, vUv).rgb;
+    vec3 base = mix(paper, vColor.rgb, vColor.a);
     vec3 color = base * (0.55 * ambient + 0.62 * diffuse + 0.16 * fillLight) + vec3(spec);
     fragColor = vec4(color, uAlpha);
 }
