@@ -212,6 +212,7 @@ void SheetRenderer::uploadSurface(const SheetSnapshot& snap, const RenderOptions
     if (snap.serial != 0 && key == surfaceKey_) return;
     surfaceKey_ = key;
     const bool material = snap.X.size() == snap.x.size();
+    surfaceHasUvs_ = material;
     const SurfaceMesh mesh =
         subdivide(snap.x, snap.tris, strain ? &snap.vertexStrain : nullptr,
                   material ? &snap.X : nullptr, options.sigma, options.subdivision);
@@ -404,7 +405,8 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
     setMatrix(surfaceProgram_, "uModel", Mat4::Identity());
     setVec3(surfaceProgram_, "uEye", eye);
     setVec3(surfaceProgram_, "uBaseColor", options.look.color.data());
-    const bool textured = bindPaperTexture(options.look);
+    // Without material coordinates every point would take one texel's colour.
+    const bool textured = surfaceHasUvs_ && bindPaperTexture(options.look);
     gl.Uniform1i(gl.GetUniformLocation(surfaceProgram_, "uTexture"), 0);
     gl.Uniform1f(gl.GetUniformLocation(surfaceProgram_, "uTextured"), textured ? 1.0f : 0.0f);
     gl.Uniform1f(gl.GetUniformLocation(surfaceProgram_, "uAlpha"), 1.0f);

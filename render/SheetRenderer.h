@@ -54,6 +54,7 @@ class SheetRenderer {
     GLuint emptyVao_ = 0;
     GLuint texture_ = 0;
     qint64 textureKey_ = 0; // QImage::cacheKey of what texture_ holds
+    bool surfaceHasUvs_ = false;
     GLsizei surfaceIndexCount_ = 0, sphereIndexCount_ = 0;
     // What the surface buffers hold, so a repaint with a new camera only does not
     // subdivide again.

@@ -3,6 +3,7 @@
 #include "OutputFile.h"
 
 #include <QtEndian>
+#include <cmath>
 #include <cstring>
 #include <sstream>
 #include <tiny_gltf.h>
@@ -85,6 +86,11 @@ QByteArray plyBytes(const SurfaceMesh& mesh, bool withNormals) {
     return out;
 }
 
+// The sRGB transfer function's inverse (IEC 61966-2-1).
+double srgbToLinear(float c) {
+    return c <= 0.04045f ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
 int addView(tinygltf::Model& model, std::vector<unsigned char>& data, const void* bytes,
             std::size_t size, int target) {
     while (data.size() % 4) data.push_back(0);
@@ -161,7 +167,9 @@ QByteArray glbBytes(const SurfaceMesh& mesh, bool withNormals, const SurfaceLook
     tinygltf::Material paper;
     paper.name = "paper";
     paper.doubleSided = true; // a sheet is seen from both sides
-    paper.pbrMetallicRoughness.baseColorFactor = {look.color[0], look.color[1], look.color[2], 1.0};
+    // glTF's factor is linear light; the look's colour is sRGB, as the view shows it.
+    paper.pbrMetallicRoughness.baseColorFactor = {
+        srgbToLinear(look.color[0]), srgbToLinear(look.color[1]), srgbToLinear(look.color[2]), 1.0};
     paper.pbrMetallicRoughness.metallicFactor = 0.0;
     paper.pbrMetallicRoughness.roughnessFactor = 0.9;
     if (withUvs && !look.texturePng.isEmpty()) {

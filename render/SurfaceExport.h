@@ -10,8 +10,9 @@ namespace pf {
 
 enum class MeshFormat { Obj, Ply, Glb };
 
-// The paper's look as a mesh file carries it. GLB: the colour as baseColorFactor and the
-// texture (PNG bytes; empty for none) as baseColorTexture. OBJ and PLY carry only the
+// The paper's look as a mesh file carries it. GLB: the colour (sRGB, as shown) as
+// baseColorFactor, converted to the linear light glTF asks for, and the texture (PNG
+// bytes; empty for none) as baseColorTexture. OBJ and PLY carry only the
 // texture coordinates.
 struct SurfaceLook {
     std::array<float, 3> color = {0.95f, 0.94f, 0.90f};

@@ -73,6 +73,9 @@ void EditSession::apply(const EditCommand& c) {
     case EditCommand::Kind::Pin:
         pin(c.target, c.radius);
         break;
+    case EditCommand::Kind::Reset:
+        if (c.world) reset(*c.world);
+        break;
     }
 }
 
@@ -117,6 +120,8 @@ void EditSession::replaceWorld(const World& world) {
     sim_.world().sphere.active = tool.active;
     grabbed_ = kNone; // a vertex of the old sheet (the new Simulation holds none)
     strokes_.clear();
+    sheet_ = 0;
+    sheetCount_ = 1;
     // A stroke held across New goes on from the new sheet.
     if (pressed_) beginStroke();
     beginLog();
@@ -138,7 +143,7 @@ void EditSession::setParams(const SimParams& given) {
 
 std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, double radius,
                                                            bool visible, bool pressed) {
-    record({EditCommand::Kind::Tool, 0, target, radius, visible, pressed, -1, nullptr});
+    record({EditCommand::Kind::Tool, 0, target, radius, visible, pressed, -1, nullptr, nullptr});
     SphereTool& sphere = sim_.world().sphere;
     toolTarget_ = target;
     sphere.radius = radius;
@@ -152,7 +157,7 @@ std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, d
 }
 
 std::optional<EditSession::StrokeEnd> EditSession::grab(const Vec3& target, bool held, bool begin) {
-    record({EditCommand::Kind::Grab, 0, target, 0.0, begin, held, -1, nullptr});
+    record({EditCommand::Kind::Grab, 0, target, 0.0, begin, held, -1, nullptr, nullptr});
     const World& w = sim_.world();
     grabTarget_ = target;
     if (w.groundEnabled) grabTarget_.y() = std::max(grabTarget_.y(), w.groundHeight);
@@ -212,7 +217,7 @@ void EditSession::setPins(const std::vector<Index>& vertices, bool pinned) {
 }
 
 std::optional<EditSession::StrokeEnd> EditSession::pin(const Vec3& point, double radius) {
-    record({EditCommand::Kind::Pin, 0, point, radius, false, false, -1, nullptr});
+    record({EditCommand::Kind::Pin, 0, point, radius, false, false, -1, nullptr, nullptr});
     if (pressed_ || grabbing()) return std::nullopt;
     const auto& V = sim_.world().sheet.verts;
     Index nearest = kNone;
@@ -302,6 +307,7 @@ Vec3 EditSession::boundedMove(const Vec3& from, const Vec3& to) const {
 }
 
 EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke, StrokeKind kind) {
+    stroke.sheet = sheet_;
     strokes_.push_back(std::move(stroke));
     if (strokes_.size() > kStrokesWithLook) {
         Stroke& old = strokes_[strokes_.size() - 1 - kStrokesWithLook];
@@ -312,11 +318,52 @@ EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke, StrokeKind kind) {
                      static_cast<int>(strokes_.back().events.size()), kind};
 }
 
+std::optional<EditSession::StrokeEnd> EditSession::reset(const World& world) {
+    EditCommand c;
+    c.kind = EditCommand::Kind::Reset;
+    c.world = std::make_shared<const World>(world);
+    record(c);
+    if (pressed_) return std::nullopt; // the stroke would go on across two sheets
+    releaseGrab();
+    setSettle(Settle::None);
+    settled_.reset(); // a settle of the sheet going away is no step of the new one
+    Stroke st;
+    st.worldBefore = std::make_shared<const World>(sim_.world());
+    st.worldAfter = c.world;
+    st.sheetBefore = sheet_;
+    st.sheetAfter = sheetCount_++;
+    swapSheet(*st.worldAfter, st.sheetAfter);
+    return keepStroke(std::move(st), StrokeKind::Reset);
+}
+
+void EditSession::swapSheet(const World& world, int sheet) {
+    const World& now = sim_.world();
+    const SphereTool tool = now.sphere;
+    const std::int64_t step = now.stepCount;
+    const double time = now.time;
+    sim_ = Simulation(world);
+    World& w = sim_.world();
+    w.script.sphereKeys.clear();
+    w.sphere = tool;
+    w.stepCount = step;
+    w.time = time;
+    sheet_ = sheet;
+}
+
 std::optional<int> EditSession::undoStroke(int stroke) {
-    record({EditCommand::Kind::Undo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr});
+    record({EditCommand::Kind::Undo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr, nullptr});
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
-    releaseGrab(); // its vertex may be recovered away
+    if (strokes_[static_cast<std::size_t>(stroke)].worldAfter) {
+        Stroke& reset = strokes_[static_cast<std::size_t>(stroke)];
+        if (sheet_ != reset.sheetAfter || pressed_) return std::nullopt;
+        releaseGrab();
+        setSettle(Settle::None);
+        swapSheet(*reset.worldBefore, reset.sheetBefore);
+        return 0;
+    }
     const Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
+    if (st.sheet != sheet_) return std::nullopt; // made on a sheet a Reset replaced
+    releaseGrab();                               // its vertex may be recovered away
     Sheet& s = sim_.world().sheet;
     int recovered = 0;
     bool all = true;
@@ -336,8 +383,19 @@ std::optional<int> EditSession::undoStroke(int stroke) {
 }
 
 std::optional<int> EditSession::redoStroke(int stroke) {
-    record({EditCommand::Kind::Redo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr});
+    record({EditCommand::Kind::Redo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr, nullptr});
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
+    if (strokes_[static_cast<std::size_t>(stroke)].worldAfter) {
+        Stroke& reset = strokes_[static_cast<std::size_t>(stroke)];
+        if (sheet_ != reset.sheetBefore || pressed_) return std::nullopt;
+        releaseGrab();
+        setSettle(Settle::None);
+        // The sheet moved on since the undo: an undo of this redo gives back that.
+        reset.worldBefore = std::make_shared<const World>(sim_.world());
+        swapSheet(*reset.worldAfter, reset.sheetAfter);
+        return 0;
+    }
+    if (strokes_[static_cast<std::size_t>(stroke)].sheet != sheet_) return std::nullopt;
     releaseGrab();
     World& w = sim_.world();
     Sheet& s = w.sheet;
@@ -388,7 +446,8 @@ StepStatus EditSession::advance(int steps) {
         }
         const StepStatus status = settle_ == Settle::Settling ? settleStep() : sim_.step();
         if (status != StepStatus::Ok) {
-            record({EditCommand::Kind::Diverged, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr});
+            record({EditCommand::Kind::Diverged, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr,
+                    nullptr});
             return status;
         }
     }
@@ -398,13 +457,14 @@ StepStatus EditSession::advance(int steps) {
 bool EditSession::placeToolAtTarget() {
     SphereTool& sphere = sim_.world().sphere;
     if ((sphere.center - toolTarget_).squaredNorm() == 0.0) return false;
-    record({EditCommand::Kind::PlaceTool, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr});
+    record(
+        {EditCommand::Kind::PlaceTool, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr, nullptr});
     sphere.center = toolTarget_;
     return true;
 }
 
 void EditSession::settle() {
-    record({EditCommand::Kind::Settle, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr});
+    record({EditCommand::Kind::Settle, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr, nullptr});
     // Not under a held tool: the stroke would go on through paper that cannot break.
     if (settle_ != Settle::None || pressed_ || grabbing()) return;
     setSettle(Settle::Settling);

@@ -23,7 +23,8 @@ struct EditCommand {
         Diverged = 6,
         Settle = 7,
         Grab = 8,
-        Pin = 9
+        Pin = 9,
+        Reset = 10
     };
     Kind kind = Kind::Tool;
     std::int64_t step = 0;
@@ -33,6 +34,7 @@ struct EditCommand {
     bool pressed = false;                    // Tool; for a Grab, it is held
     int stroke = -1;                         // Undo, Redo
     std::shared_ptr<const SimParams> params; // Params (shared: most commands are tool moves)
+    std::shared_ptr<const World> world;      // Reset: the sheet it starts again from
 };
 
 // Everything needed to do a session again: the world it started from, the tool's target
@@ -70,7 +72,7 @@ class EditSession {
     void setParams(const SimParams& params);
 
     // What an undo step is, for its name in the history.
-    enum class StrokeKind : std::uint8_t { Push, Grab, Pin, Unpin, Settle };
+    enum class StrokeKind : std::uint8_t { Push, Grab, Pin, Unpin, Settle, Reset };
     struct StrokeEnd {
         int stroke = 0; // its index, for undoStroke / redoStroke
         int events = 0; // breaks and hinges it made; for a pin, the vertices it (un)pinned
@@ -102,6 +104,13 @@ class EditSession {
     // to it is free, freed when it is pinned. Pinned vertices stand still and are saved
     // with the sheet. An undo step; nothing when no vertex is that close.
     std::optional<StrokeEnd> pin(const Vec3& point, double radius);
+
+    // Reset: the sheet starts again from `world` (the scene as New makes it) as an undo
+    // step, unlike New and Open: undo gives back the sheet as it was, with the strokes
+    // made on it, and redo the fresh sheet. The clock runs on (commands stay in step
+    // order) and the tool stays where it is. A grab is let go; refused while the push
+    // tool is pressed.
+    std::optional<StrokeEnd> reset(const World& world);
 
     // Undo recovers (§4.2), newest first, every break and hinge since the stroke began —
     // its own and those the sheet made settling after it — and, when all came back, gives
@@ -168,6 +177,13 @@ class EditSession {
         // A pin: these vertices were set to `pinnedTo` (undo sets them back).
         std::vector<Index> pinChanged;
         bool pinnedTo = false;
+        // The sheet it was made on (sheet_): its edge and vertex ids mean nothing on
+        // another, so undo and redo need that sheet.
+        int sheet = 0;
+        // A Reset: the whole sheet before it (as the last do left it) and after it, and
+        // which sheet each is.
+        std::shared_ptr<const World> worldBefore, worldAfter;
+        int sheetBefore = 0, sheetAfter = 0;
     };
     SheetLook look() const;
     // Gives back `look` if the sheet has the same vertices again; false otherwise.
@@ -186,6 +202,8 @@ class EditSession {
     StrokeEnd keepStroke(Stroke stroke, StrokeKind kind);
     void beginLog();
     void record(EditCommand command);
+    // Puts `world` in place as sheet `sheet`, keeping the clock and the tool.
+    void swapSheet(const World& world, int sheet);
 
     Simulation sim_;
     Vec3 toolTarget_ = Vec3::Zero();
@@ -194,6 +212,8 @@ class EditSession {
     Vec3 grabTarget_ = Vec3::Zero();
     Index strokeStart_ = 0;
     std::vector<Stroke> strokes_;
+    int sheet_ = 0;         // which sheet is in place: 0 the first, each Reset a new one
+    int sheetCount_ = 1;    // sheets made so far
     SheetLook pressedLook_; // the sheet when the current stroke began
     MeshSize pressedMesh_;
     void beginStroke();

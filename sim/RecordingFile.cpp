@@ -17,7 +17,8 @@ namespace pf {
 namespace {
 
 // One command: step i64, kind u8, flags u8 (1 visible, 2 pressed), 2 zero bytes, argument
-// i32 (the stroke of an undo or redo, the params entry of a change), target 3 × f64,
+// i32 (the stroke of an undo or redo, the params entry of a change, the worlds entry of
+// a reset), target 3 × f64,
 // radius f64; little-endian.
 constexpr qsizetype kCommandBytes = 48;
 
@@ -48,10 +49,10 @@ const CborBounds& recordingBounds() {
     static const CborBounds bounds = [] {
         CborBounds b;
         for (const char* key : {"magic", "version", "start", "toolTarget", "pressed", "endStep",
-                                "commands", "params"})
+                                "commands", "params", "worlds"})
             b.knownKeys.insert(QLatin1String(key));
         b.maxDepth = 3;
-        b.maxValues = kMaxRecordedParams + 64;
+        b.maxValues = kMaxRecordedParams + kMaxRecordedResets + 64;
         return b;
     }();
     return bounds;
@@ -75,12 +76,15 @@ QByteArray encodeRecording(const EditLog& log) {
     root[QLatin1String("endStep")] = static_cast<qint64>(log.endStep);
     QByteArray commands;
     commands.reserve(static_cast<qsizetype>(log.commands.size()) * kCommandBytes);
-    QCborArray params;
+    QCborArray params, worlds;
     for (const EditCommand& c : log.commands) {
         std::int32_t argument = c.stroke;
         if (c.kind == EditCommand::Kind::Params) {
             argument = static_cast<std::int32_t>(params.size());
             params.append(encodeParams(*c.params));
+        } else if (c.kind == EditCommand::Kind::Reset) {
+            argument = static_cast<std::int32_t>(worlds.size());
+            worlds.append(encodeWorld(*c.world));
         }
         put<std::int64_t>(commands, c.step);
         put<std::uint8_t>(commands, static_cast<std::uint8_t>(c.kind));
@@ -92,6 +96,7 @@ QByteArray encodeRecording(const EditLog& log) {
     }
     root[QLatin1String("commands")] = commands;
     root[QLatin1String("params")] = params;
+    if (!worlds.isEmpty()) root[QLatin1String("worlds")] = worlds;
     return root.toCborValue().toCbor();
 }
 
@@ -141,6 +146,24 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
         params.push_back(std::make_shared<const SimParams>(std::move(*decoded)));
     }
 
+    // Optional: a session without a Reset has none (and recordings made before Reset
+    // was an undo step read as they did).
+    std::vector<std::shared_ptr<const World>> worlds;
+    const QCborValue worldsValue = root.value(QLatin1String("worlds"));
+    if (!worldsValue.isUndefined()) {
+        if (!worldsValue.isArray() || worldsValue.toArray().size() > kMaxRecordedResets)
+            return bad(QStringLiteral("recording.worlds: not a list of at most %1 sheets")
+                           .arg(kMaxRecordedResets));
+        for (const QCborValue& w : worldsValue.toArray()) {
+            if (!w.isByteArray()) return bad(QStringLiteral("recording.worlds: not a sheet"));
+            WorldLoad decoded = decodeWorld(w.toByteArray());
+            if (!decoded.world)
+                return bad(QStringLiteral("recording.worlds[%1]: %2")
+                               .arg(worlds.size())
+                               .arg(decoded.error));
+            worlds.push_back(std::make_shared<const World>(std::move(*decoded.world)));
+        }
+    }
     const QByteArray commands = root.value(QLatin1String("commands")).toByteArray();
     if (commands.size() % kCommandBytes != 0 ||
         commands.size() / kCommandBytes > kMaxRecordedCommands)
@@ -158,7 +181,7 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
         lastStep = c.step;
         const auto kind = take<std::uint8_t>(p + 8);
         const auto flags = take<std::uint8_t>(p + 9);
-        if (kind < 1 || kind > 9) return bad(where + QStringLiteral(": unknown command"));
+        if (kind < 1 || kind > 10) return bad(where + QStringLiteral(": unknown command"));
         if (flags > 3 || take<std::uint16_t>(p + 10) != 0)
             return bad(where + QStringLiteral(": unknown flags"));
         c.kind = static_cast<EditCommand::Kind>(kind);
@@ -174,6 +197,10 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
             if (argument < 0 || argument >= static_cast<std::int32_t>(params.size()))
                 return bad(where + QStringLiteral(": no such parameter change"));
             c.params = params[static_cast<std::size_t>(argument)];
+        } else if (c.kind == EditCommand::Kind::Reset) {
+            if (argument < 0 || argument >= static_cast<std::int32_t>(worlds.size()))
+                return bad(where + QStringLiteral(": no such sheet to reset to"));
+            c.world = worlds[static_cast<std::size_t>(argument)];
         } else {
             // An undo of a stroke that does not exist does nothing, as in the editor.
             c.stroke = argument;
@@ -186,8 +213,18 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
 bool saveRecording(const EditLog& log, const QString& path, QString* error,
                    const QStringList& inputs) {
     // What could not be loaded again is not written.
-    qint64 params = 0;
-    for (const EditCommand& c : log.commands) params += c.kind == EditCommand::Kind::Params;
+    qint64 params = 0, resets = 0;
+    for (const EditCommand& c : log.commands) {
+        params += c.kind == EditCommand::Kind::Params;
+        resets += c.kind == EditCommand::Kind::Reset;
+    }
+    if (resets > kMaxRecordedResets) {
+        *error = QStringLiteral("the session has too many resets to record (%1; at most %2): "
+                                "start a new one with New or Open")
+                     .arg(resets)
+                     .arg(kMaxRecordedResets);
+        return false;
+    }
     if (params > kMaxRecordedParams ||
         static_cast<qint64>(log.commands.size()) > kMaxRecordedCommands ||
         log.endStep - log.start.stepCount > kMaxRecordedSteps) {

@@ -19,6 +19,8 @@ inline constexpr qint64 kMaxRecordingBytes = 1024LL * 1024 * 1024;
 // refused before anything is allocated for them.
 inline constexpr qint64 kMaxRecordedParams = 200'000;
 inline constexpr qint64 kMaxRecordedCommands = 20'000'000;
+// Each Reset carries the sheet it starts from (a whole sheet file's worth).
+inline constexpr qint64 kMaxRecordedResets = 1'000;
 // As `simulate --steps` at most: a recording may not ask for more steps than that.
 inline constexpr qint64 kMaxRecordedSteps = 1'000'000'000;
 

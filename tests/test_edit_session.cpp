@@ -621,6 +621,56 @@ class TestEditSession : public QObject {
         checkReplays(session);
     }
 
+    // Reset is an undo step: the fresh sheet in place, the clock running on; strokes on
+    // the fresh sheet undo as usual; undo of the Reset gives back the crumpled sheet bit
+    // for bit, and then its own strokes undo again, while a stroke of the other sheet is
+    // refused; redo resets again. The whole session replays, through the file too.
+    void resetIsAnUndoStepThatGivesTheSheetBack() {
+        EditSession session(*makeScene("press"));
+        const World fresh = session.world();
+        const auto crumple = pushStroke(session, 0.0, 0.6);
+        QVERIFY(crumple && crumple->events > 0);
+        QCOMPARE(session.advance(30), StepStatus::Ok);
+        const Topology crumpled = topology(session.world().sheet);
+        const std::int64_t stepBefore = session.world().stepCount;
+
+        const auto reset = session.reset(fresh);
+        QVERIFY(reset.has_value());
+        QCOMPARE(reset->kind, EditSession::StrokeKind::Reset);
+        QVERIFY(session.world().sheet.verts.x == fresh.sheet.verts.x);
+        QCOMPARE(topology(session.world().sheet), topology(fresh.sheet));
+        QCOMPARE(session.world().stepCount, stepBefore); // the clock runs on
+        // A stroke of the crumpled sheet means nothing on this one.
+        QCOMPARE(session.undoStroke(crumple->stroke), std::optional<int>());
+        QCOMPARE(topology(session.world().sheet), topology(fresh.sheet));
+
+        const auto again = pushStroke(session, 0.0, 0.4);
+        QVERIFY(again.has_value());
+        QCOMPARE(session.advance(12), StepStatus::Ok);
+        QVERIFY(session.undoStroke(again->stroke).has_value());
+        // Undo of the reset: the crumpled sheet as it was when Reset was chosen.
+        World expected = session.world(); // for the clock only
+        QCOMPARE(session.undoStroke(reset->stroke), std::optional<int>(0));
+        QCOMPARE(topology(session.world().sheet), crumpled);
+        QCOMPARE(session.world().stepCount, expected.stepCount);
+        // Its own strokes undo again: the damage recovered, flat as before the push.
+        // (and those the sheet made settling after it)
+        const auto recovered = session.undoStroke(crumple->stroke);
+        QVERIFY(recovered && *recovered >= crumple->events);
+        QCOMPARE(topology(session.world().sheet), topology(fresh.sheet));
+        QVERIFY(session.world().sheet.verts.x == fresh.sheet.verts.x);
+        QCOMPARE(session.redoStroke(crumple->stroke), std::optional<int>(crumple->events));
+        QCOMPARE(topology(session.world().sheet).activeEvents, Index(crumple->events));
+        // Redo resets again; a reset is refused while the tool is pressed.
+        QCOMPARE(session.redoStroke(reset->stroke), std::optional<int>(0));
+        QCOMPARE(topology(session.world().sheet), topology(fresh.sheet));
+        QCOMPARE(session.advance(10), StepStatus::Ok);
+        session.setTool(session.world().sphere.center, session.world().sphere.radius, true, true);
+        QVERIFY(!session.reset(fresh).has_value());
+        session.setTool(session.world().sphere.center, session.world().sphere.radius, true, false);
+        checkReplays(session);
+    }
+
     void aNewSheetForgetsTheStrokesButKeepsTheTool() {
         EditSession session(*makeScene("press"));
         QVERIFY(pushStroke(session, 0.0, 0.5).has_value());
@@ -739,7 +789,9 @@ class TestEditSession : public QObject {
         QTest::newRow("empty") << QByteArray() << "";
         QTest::newRow("a sheet, not a recording") << encodeWorld(log.start) << "wrong magic";
         QTest::newRow("truncated") << good.left(good.size() / 2) << "";
-        QTest::newRow("unknown command") << withCommandByte(log, 8, 10) << "unknown command";
+        QTest::newRow("unknown command") << withCommandByte(log, 8, 11) << "unknown command";
+        QTest::newRow("a reset without its sheet")
+            << withCommandByte(log, 8, 10) << "no such sheet to reset to";
         QTest::newRow("unknown flags") << withCommandByte(log, 9, 4) << "unknown flags";
         QTest::newRow("a step from the future") << withCommandByte(log, 6, 1) << "out of order";
         QByteArray nan(8, '\0');

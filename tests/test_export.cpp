@@ -150,10 +150,12 @@ class TestExport : public QObject {
             QCOMPARE(data[2 * i], float(m.uvs[i].x()));
             QCOMPARE(data[2 * i + 1], float(m.uvs[i].y()));
         }
+        // The factor is linear light (glTF 2.0 §3.9.2); the colour is sRGB: 0.8, 0.3 and
+        // 0.2 are 0.6038, 0.0732 and 0.0331 linear (IEC 61966-2-1, by hand).
         const auto& pbr = model.materials[0].pbrMetallicRoughness;
-        QCOMPARE(pbr.baseColorFactor[0], double(0.8f));
-        QCOMPARE(pbr.baseColorFactor[1], double(0.3f));
-        QCOMPARE(pbr.baseColorFactor[2], double(0.2f));
+        QVERIFY(std::abs(pbr.baseColorFactor[0] - 0.6038) < 1e-4);
+        QVERIFY(std::abs(pbr.baseColorFactor[1] - 0.0732) < 1e-4);
+        QVERIFY(std::abs(pbr.baseColorFactor[2] - 0.0331) < 1e-4);
         QCOMPARE(pbr.baseColorTexture.index, 0);
         QCOMPARE(pbr.baseColorTexture.texCoord, 0);
         QCOMPARE(model.images.size(), std::size_t(1));

@@ -70,6 +70,10 @@
             <numerusform>Lösen (%n Knoten)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
 </context>
 <context>
     <name>pf::ActionTexts</name>
@@ -140,10 +144,6 @@
     <message>
         <source>&amp;Reset</source>
         <translation>&amp;Zurücksetzen</translation>
-    </message>
-    <message>
-        <source>Start the current scene again</source>
-        <translation>Die aktuelle Szene neu beginnen</translation>
     </message>
     <message>
         <source>&amp;Spring kinds</source>
@@ -236,6 +236,10 @@
     <message>
         <source>Pin: a click pins the paper around the point, or frees it if it is pinned; Ctrl + wheel sizes the region (I)</source>
         <translation>Anheften: Ein Klick heftet das Papier um den Punkt an oder löst es, wenn es angeheftet ist; Strg + Mausrad ändert die Größe des Bereichs (I)</translation>
+    </message>
+    <message>
+        <source>Start the current scene again (Edit ▸ Undo gives it back)</source>
+        <translation>Die aktuelle Szene neu beginnen (Bearbeiten ▸ Rückgängig holt sie zurück)</translation>
     </message>
 </context>
 <context>
@@ -501,6 +505,10 @@
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
+    <message>
+        <source>An image is being exported; close once it is written.</source>
+        <translation>Ein Bild wird exportiert; schließen Sie, sobald es geschrieben ist.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>
@@ -522,7 +530,7 @@
     </message>
     <message>
         <source>Paper &amp;Grain</source>
-        <translation>Papier&amp;struktur</translation>
+        <translation>PapiersPapier&amp;strukturamp;truktur</translation>
     </message>
     <message>
         <source>P&amp;icture: %1…</source>

@@ -66,6 +66,10 @@
             <numerusform>ピン解除（頂点 %n 個）</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Reset</source>
+        <translation>リセット</translation>
+    </message>
 </context>
 <context>
     <name>pf::ActionTexts</name>
@@ -136,10 +140,6 @@
     <message>
         <source>&amp;Reset</source>
         <translation>リセット(&amp;R)</translation>
-    </message>
-    <message>
-        <source>Start the current scene again</source>
-        <translation>現在のシーンを最初から</translation>
     </message>
     <message>
         <source>&amp;Spring kinds</source>
@@ -232,6 +232,10 @@
     <message>
         <source>Pin: a click pins the paper around the point, or frees it if it is pinned; Ctrl + wheel sizes the region (I)</source>
         <translation>ピン留め：クリックでその点の周りの紙を固定し、固定済みなら解除します。Ctrl + ホイールで範囲の大きさを変えます (I)</translation>
+    </message>
+    <message>
+        <source>Start the current scene again (Edit ▸ Undo gives it back)</source>
+        <translation>現在のシーンを最初からやり直します (編集 ▸ 元に戻す で戻せます)</translation>
     </message>
 </context>
 <context>
@@ -496,6 +500,10 @@
     <message>
         <source>Exported %1</source>
         <translation>%1 を書き出しました</translation>
+    </message>
+    <message>
+        <source>An image is being exported; close once it is written.</source>
+        <translation>画像を書き出しています。書き出しが終わってから閉じてください。</translation>
     </message>
 </context>
 <context>

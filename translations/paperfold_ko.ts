@@ -66,6 +66,10 @@
             <numerusform>고정 해제 (정점 %n개)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Reset</source>
+        <translation>초기화</translation>
+    </message>
 </context>
 <context>
     <name>pf::ActionTexts</name>
@@ -136,10 +140,6 @@
     <message>
         <source>&amp;Reset</source>
         <translation>초기화(&amp;R)</translation>
-    </message>
-    <message>
-        <source>Start the current scene again</source>
-        <translation>현재 장면을 처음부터 다시 시작</translation>
     </message>
     <message>
         <source>&amp;Spring kinds</source>
@@ -232,6 +232,10 @@
     <message>
         <source>Pin: a click pins the paper around the point, or frees it if it is pinned; Ctrl + wheel sizes the region (I)</source>
         <translation>고정: 클릭하면 그 점 주변의 종이를 고정하고, 이미 고정되어 있으면 풀어 줍니다. Ctrl + 휠로 영역 크기를 바꿉니다 (I)</translation>
+    </message>
+    <message>
+        <source>Start the current scene again (Edit ▸ Undo gives it back)</source>
+        <translation>현재 장면을 처음부터 다시 시작합니다 (편집 ▸ 실행 취소로 되돌릴 수 있음)</translation>
     </message>
 </context>
 <context>
@@ -496,6 +500,10 @@
     <message>
         <source>Exported %1</source>
         <translation>%1 내보냄</translation>
+    </message>
+    <message>
+        <source>An image is being exported; close once it is written.</source>
+        <translation>이미지를 내보내는 중입니다. 다 쓴 뒤에 닫으세요.</translation>
     </message>
 </context>
 <context>

@@ -31,7 +31,7 @@ void ActionTexts::apply(const QObject* window) {
     set("settle", tr("Sett&le"),
         tr("Let the sheet come to rest without new breaks and keep it so until the next edit "
            "(Ctrl+K)"));
-    set("reset", tr("&Reset"), tr("Start the current scene again"));
+    set("reset", tr("&Reset"), tr("Start the current scene again (Edit ▸ Undo gives it back)"));
     set("tool.push", tr("&Push"),
         tr("Push: the left button presses the sphere into the sheet and ploughs it (P)"));
     set("tool.grab", tr("&Grab"),

@@ -104,6 +104,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(sim_.get(), &SimulationThread::strokeRecorded, this,
             [this](int stroke, int events, int kind) {
                 undo_->push(new StrokeCommand(sim_.get(), stroke, events, kind));
+                // The view fits the fresh sheet, as after New (its snapshot comes next).
+                if (kind == static_cast<int>(EditSession::StrokeKind::Reset)) firstSnapshot_ = true;
             });
     connect(sim_.get(), &SimulationThread::settled, this, [this](int stroke) {
         undo_->push(new StrokeCommand(sim_.get(), stroke, 0,
@@ -283,7 +285,10 @@ void MainWindow::createActions() {
     });
     connect(make("reset", QKeySequence(tr("Ctrl+R")), QStyle::SP_BrowserReload),
             &QAction::triggered, this, [this] {
-                if (maybeSave()) newScene(scene_);
+                // An undo step, so nothing to ask: Edit ▸ Undo gives the sheet back.
+                if (input_->toolPressed()) return; // not in the middle of a push
+                input_->letGo();
+                sim_->reset(sceneWorldWithParams(scene_));
             });
 
     auto* tools = new QActionGroup(this);
@@ -476,12 +481,17 @@ void MainWindow::updateTitle() {
     setWindowModified(isModified());
 }
 
-void MainWindow::newScene(const QString& scene) {
-    scene_ = scene;
+World MainWindow::sceneWorldWithParams(const QString& scene) const {
     World w = sceneWorld(scene);
     const bool breaking = w.params.breaking; // the scene's own (drape has none)
     w.params = params();
     w.params.breaking = breaking;
+    return w;
+}
+
+void MainWindow::newScene(const QString& scene) {
+    scene_ = scene;
+    const World w = sceneWorldWithParams(scene);
     parameters_->set(w.params); // the window's parameters are the sheet's
     sim_->replaceWorld(w);
     undo_->clear();
@@ -553,6 +563,11 @@ bool MainWindow::maybeSave() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (exporting_) {
+        statusBar()->showMessage(tr("An image is being exported; close once it is written."), 5000);
+        event->ignore();
+        return;
+    }
     if (!maybeSave()) {
         event->ignore();
         return;
@@ -572,6 +587,7 @@ bool MainWindow::toolPressed() const {
 }
 
 void MainWindow::exportImage() {
+    if (exporting_) return; // one at a time: this one waits in a nested event loop
     // Held for the worker: new frames replace the viewport's while it renders.
     const std::shared_ptr<const SheetSnapshot> snap = viewport_->sharedSnapshot();
     if (!snap) return;
@@ -603,11 +619,14 @@ void MainWindow::exportImage() {
     progress.setWindowTitle(tr("Export Image"));
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(400); // no flash for a small image
+    progress.setValue(0);             // starts the minimum-duration timer of a busy indicator
     QEventLoop wait;
     connect(worker.get(), &QThread::finished, &wait, &QEventLoop::quit);
+    exporting_ = true; // until then Export Image and closing the window wait
     worker->start();
     wait.exec();
     worker->wait();
+    exporting_ = false;
     progress.reset();
     if (written)
         statusBar()->showMessage(tr("Exported %1").arg(QFileInfo(path).fileName()), 5000);

@@ -96,6 +96,8 @@ class MainWindow : public QMainWindow {
     void exportImage();
     void exportMesh();
     World sceneWorld(const QString& scene) const;
+    // The scene's fresh sheet with the window's parameters (New and Reset).
+    World sceneWorldWithParams(const QString& scene) const;
 
     std::unique_ptr<SimulationThread> sim_;
     Viewport* viewport_ = nullptr;
@@ -129,6 +131,8 @@ class MainWindow : public QMainWindow {
     // The first-run hint is up until the first thing done in the view (QSettings
     // remembers that it went).
     bool hintShown_ = false;
+    // Export Image renders on a worker while a nested event loop keeps the window drawn.
+    bool exporting_ = false;
 };
 
 } // namespace pf

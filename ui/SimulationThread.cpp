@@ -112,6 +112,9 @@ void SimulationThread::grab(const Vec3& target, bool held, bool begin) {
 void SimulationThread::pin(const Vec3& point, double radius) {
     PF_POST(pin(point, radius));
 }
+void SimulationThread::reset(const World& world) {
+    PF_POST(reset(world));
+}
 void SimulationThread::undoStroke(int stroke) {
     PF_POST(undoStroke(stroke));
 }

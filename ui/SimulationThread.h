@@ -37,7 +37,7 @@ class SimulationThread : public QObject {
     void setPlaying(bool playing);
     void stepOnce();
     void setParams(const SimParams& params);
-    void replaceWorld(const World& world); // New, Open, Reset
+    void replaceWorld(const World& world); // New, Open
     // The tool: where the user points (target centre), its radius, and whether the
     // mouse button is down (a push stroke lasts from press to release).
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
@@ -46,6 +46,9 @@ class SimulationThread : public QObject {
     void grab(const Vec3& target, bool held, bool begin);
     // The pin tool: toggles the pins within `radius` of `point` (EditSession::pin).
     void pin(const Vec3& point, double radius);
+    // Simulation ▸ Reset: the sheet starts again from `world`, as an undo step
+    // (EditSession::reset), unlike replaceWorld.
+    void reset(const World& world);
     void undoStroke(int stroke);
     void redoStroke(int stroke);
     // Lets the sheet come to rest without damage and keeps it so until the next edit

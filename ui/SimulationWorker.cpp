@@ -69,6 +69,12 @@ void SimulationWorker::pin(const Vec3& point, double radius) {
     if (ended) publish(0.0); // the pins show while paused too
 }
 
+void SimulationWorker::reset(const World& world) {
+    const auto ended = session_.reset(world);
+    announce(ended);
+    if (ended) publish(0.0); // the fresh sheet shows while paused too
+}
+
 void SimulationWorker::announce(const std::optional<EditSession::StrokeEnd>& ended) {
     if (ended) emit strokeRecorded(ended->stroke, ended->events, static_cast<int>(ended->kind));
 }

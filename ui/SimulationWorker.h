@@ -32,6 +32,7 @@ class SimulationWorker : public QObject {
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
     void grab(const Vec3& target, bool held, bool begin);
     void pin(const Vec3& point, double radius);
+    void reset(const World& world);
     void undoStroke(int stroke);
     void redoStroke(int stroke);
     void settle();

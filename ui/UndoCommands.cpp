@@ -29,6 +29,9 @@ StrokeCommand::StrokeCommand(SimulationThread* sim, int stroke, int events, int 
     case EditSession::StrokeKind::Settle:
         setText(QCoreApplication::translate("UndoCommands", "Settle"));
         break;
+    case EditSession::StrokeKind::Reset:
+        setText(QCoreApplication::translate("UndoCommands", "Reset"));
+        break;
     }
 }
 
