@@ -35,10 +35,13 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
-#include <QThread>
+#include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
 #include <QUndoView>
+
+#include <atomic>
+#include <thread>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -609,10 +612,6 @@ void MainWindow::exportImage() {
     QString error;
     bool written = false;
     const OrbitCamera camera = viewport_->camera();
-    std::unique_ptr<QThread> worker(QThread::create([&] {
-        written =
-            exportSnapshotImage(*snap, camera, picture, size.width(), size.height(), path, &error);
-    }));
     QProgressDialog progress(
         tr("Rendering the image (%1 x %2)…").arg(size.width()).arg(size.height()), QString(), 0, 0,
         this);
@@ -620,12 +619,24 @@ void MainWindow::exportImage() {
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(400); // no flash for a small image
     progress.setValue(0);             // starts the minimum-duration timer of a busy indicator
-    QEventLoop wait;
-    connect(worker.get(), &QThread::finished, &wait, &QEventLoop::quit);
     exporting_ = true; // until then Export Image and closing the window wait
-    worker->start();
+    // The worker only sets an atomic flag, which the window polls, and its results are
+    // read after the join: synchronisation ThreadSanitizer sees (a queued Qt call or
+    // QThread::wait would hand over through Qt's uninstrumented locks).
+    std::atomic<bool> done = false;
+    std::thread worker([&] {
+        written =
+            exportSnapshotImage(*snap, camera, picture, size.width(), size.height(), path, &error);
+        done = true;
+    });
+    QEventLoop wait;
+    QTimer poll;
+    connect(&poll, &QTimer::timeout, &wait, [&] {
+        if (done) wait.quit();
+    });
+    poll.start(20);
     wait.exec();
-    worker->wait();
+    worker.join();
     exporting_ = false;
     progress.reset();
     if (written)
