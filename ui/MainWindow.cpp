@@ -39,7 +39,6 @@
 #include <QToolBar>
 #include <QUndoStack>
 #include <QUndoView>
-
 #include <atomic>
 #include <thread>
 
@@ -619,7 +618,7 @@ void MainWindow::exportImage() {
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(400); // no flash for a small image
     progress.setValue(0);             // starts the minimum-duration timer of a busy indicator
-    exporting_ = true; // until then Export Image and closing the window wait
+    exporting_ = true;                // until then Export Image and closing the window wait
     // The worker only sets an atomic flag, which the window polls, and its results are
     // read after the join: synchronisation ThreadSanitizer sees (a queued Qt call or
     // QThread::wait would hand over through Qt's uninstrumented locks).
