@@ -149,8 +149,20 @@ bool setPaperTextureFromText(const QString& text, PaperLook* look, QString* erro
     if (!loadPaperImage(text, &image, error)) return false;
     look->texture = PaperTexture::Image;
     look->image = image;
-    look->imageName = QFileInfo(text).fileName();
+    look->imagePath = text;
     return true;
+}
+
+QString paperTextureText(const PaperLook& look) {
+    switch (look.texture) {
+    case PaperTexture::Plain:
+        break;
+    case PaperTexture::Grain:
+        return QStringLiteral("grain");
+    case PaperTexture::Image:
+        return look.imagePath;
+    }
+    return QStringLiteral("plain");
 }
 
 SurfaceLook surfaceLook(const PaperLook& look) {

@@ -15,10 +15,10 @@ namespace pf {
 enum class PaperTexture { Plain, Grain, Image };
 
 struct PaperLook {
-    std::array<float, 3> color = {0.95f, 0.94f, 0.90f}; // linear-ish sRGB, 0..1
+    std::array<float, 3> color = kPaperColor; // sRGB, 0..1
     PaperTexture texture = PaperTexture::Plain;
     QImage image;      // PaperTexture::Image: the picked picture, as loadPaperImage left it
-    QString imageName; // where it came from, for menus and messages
+    QString imagePath; // where it came from, for menus, messages and settings
 };
 
 // The built-in paper grain: faint cloudy formation and fibres along the sheet's length,
@@ -43,6 +43,8 @@ QString paperColorText(const std::array<float, 3>& color);
 
 // "plain", "grain" or an image file's path: the texture part of a look (the colour kept).
 bool setPaperTextureFromText(const QString& text, PaperLook* look, QString* error);
+// The same text for a look's texture (its picture's path for an image).
+QString paperTextureText(const PaperLook& look);
 
 // The look as the mesh writers take it: the colour and the texture as PNG bytes.
 SurfaceLook surfaceLook(const PaperLook& look);

@@ -211,11 +211,9 @@ void SheetRenderer::uploadSurface(const SheetSnapshot& snap, const RenderOptions
                          strain};
     if (snap.serial != 0 && key == surfaceKey_) return;
     surfaceKey_ = key;
-    const bool material = snap.X.size() == snap.x.size();
-    surfaceHasUvs_ = material;
-    const SurfaceMesh mesh =
-        subdivide(snap.x, snap.tris, strain ? &snap.vertexStrain : nullptr,
-                  material ? &snap.X : nullptr, options.sigma, options.subdivision);
+    const SurfaceMesh mesh = subdivide(snap.x, snap.tris, strain ? &snap.vertexStrain : nullptr,
+                                       &snap.X, options.sigma, options.subdivision);
+    surfaceHasUvs_ = !mesh.uvs.empty();
     clearFor(vertexData_, mesh.positions.size() * kSurfaceFloats);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         Vec3 p = mesh.positions[i];
@@ -230,7 +228,7 @@ void SheetRenderer::uploadSurface(const SheetSnapshot& snap, const RenderOptions
         } else {
             vertexData_.insert(vertexData_.end(), {0.0f, 0.0f, 0.0f, 0.0f});
         }
-        if (material)
+        if (surfaceHasUvs_)
             vertexData_.insert(vertexData_.end(), {float(mesh.uvs[i].x()), float(mesh.uvs[i].y())});
         else
             vertexData_.insert(vertexData_.end(), {0.0f, 0.0f});

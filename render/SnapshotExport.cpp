@@ -17,8 +17,7 @@ bool exportSnapshotImage(const SheetSnapshot& snap, const OrbitCamera& camera,
 bool exportSnapshotMesh(const SheetSnapshot& snap, const RenderOptions& options,
                         const QString& path, MeshFormat format, QString* error) {
     const SurfaceMesh mesh =
-        subdivide(snap.x, snap.tris, nullptr, snap.X.size() == snap.x.size() ? &snap.X : nullptr,
-                  options.sigma, options.subdivision);
+        subdivide(snap.x, snap.tris, nullptr, &snap.X, options.sigma, options.subdivision);
     return writeSurface(mesh, path, format, true, surfaceLook(options.look), error);
 }
 

@@ -49,7 +49,7 @@ SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& t
     mesh.positions = x;
     computeVertexNormals(x, tris, mesh.normals);
     if (scalars) mesh.scalars = *scalars;
-    if (material) mesh.uvs = materialUvs(*material);
+    if (material && material->size() == x.size()) mesh.uvs = materialUvs(*material);
     mesh.triangles.reserve(tris.size());
     for (const Triangle& t : tris)
         mesh.triangles.push_back({static_cast<std::uint32_t>(t.v[0]),

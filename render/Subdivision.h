@@ -39,7 +39,8 @@ inline constexpr int kMaxSubdivisionLevel = 4;
 // midpoint is made once per edge and shared by both triangles, so the surface
 // has no cracks. Vertex normals start as the sheet's area-weighted normals.
 // `scalars`, if not null, holds one value per vertex carried to the subdivided surface;
-// `material`, if not null, the vertices' material coordinates, carried as uvs.
+// `material`, if not null and one per vertex, the vertices' material coordinates,
+// carried as uvs (the mesh has none otherwise).
 SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& tris,
                       const std::vector<float>* scalars, const std::vector<Vec2>* material,
                       double sigma, int levels);

@@ -14,8 +14,11 @@ enum class MeshFormat { Obj, Ply, Glb };
 // baseColorFactor, converted to the linear light glTF asks for, and the texture (PNG
 // bytes; empty for none) as baseColorTexture. OBJ and PLY carry only the
 // texture coordinates.
+// Office paper's off-white, sRGB: the look's default colour.
+inline constexpr std::array<float, 3> kPaperColor = {0.95f, 0.94f, 0.90f};
+
 struct SurfaceLook {
-    std::array<float, 3> color = {0.95f, 0.94f, 0.90f};
+    std::array<float, 3> color = kPaperColor;
     QByteArray texturePng;
 };
 

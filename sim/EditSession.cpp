@@ -121,7 +121,6 @@ void EditSession::replaceWorld(const World& world) {
     grabbed_ = kNone; // a vertex of the old sheet (the new Simulation holds none)
     strokes_.clear();
     sheet_ = 0;
-    sheetCount_ = 1;
     // A stroke held across New goes on from the new sheet.
     if (pressed_) beginStroke();
     beginLog();
@@ -324,19 +323,21 @@ std::optional<EditSession::StrokeEnd> EditSession::reset(const World& world) {
     c.world = std::make_shared<const World>(world);
     record(c);
     if (pressed_) return std::nullopt; // the stroke would go on across two sheets
-    releaseGrab();
-    setSettle(Settle::None);
-    settled_.reset(); // a settle of the sheet going away is no step of the new one
+    settled_.reset();                  // a settle of the sheet going away is no step of the new one
+    releaseGrab();                     // before the copy: the hand's pin is not the sheet's
     Stroke st;
     st.worldBefore = std::make_shared<const World>(sim_.world());
     st.worldAfter = c.world;
     st.sheetBefore = sheet_;
-    st.sheetAfter = sheetCount_++;
+    // Numbered by the Reset's own undo step, unique in the session (0 is the first).
+    st.sheetAfter = static_cast<int>(strokes_.size()) + 1;
     swapSheet(*st.worldAfter, st.sheetAfter);
     return keepStroke(std::move(st), StrokeKind::Reset);
 }
 
 void EditSession::swapSheet(const World& world, int sheet) {
+    releaseGrab();
+    setSettle(Settle::None);
     const World& now = sim_.world();
     const SphereTool tool = now.sphere;
     const std::int64_t step = now.stepCount;
@@ -353,15 +354,12 @@ void EditSession::swapSheet(const World& world, int sheet) {
 std::optional<int> EditSession::undoStroke(int stroke) {
     record({EditCommand::Kind::Undo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr, nullptr});
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
-    if (strokes_[static_cast<std::size_t>(stroke)].worldAfter) {
-        Stroke& reset = strokes_[static_cast<std::size_t>(stroke)];
-        if (sheet_ != reset.sheetAfter || pressed_) return std::nullopt;
-        releaseGrab();
-        setSettle(Settle::None);
-        swapSheet(*reset.worldBefore, reset.sheetBefore);
+    const Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
+    if (st.worldAfter) { // a Reset
+        if (sheet_ != st.sheetAfter || pressed_) return std::nullopt;
+        swapSheet(*st.worldBefore, st.sheetBefore);
         return 0;
     }
-    const Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
     if (st.sheet != sheet_) return std::nullopt; // made on a sheet a Reset replaced
     releaseGrab();                               // its vertex may be recovered away
     Sheet& s = sim_.world().sheet;
@@ -385,12 +383,10 @@ std::optional<int> EditSession::undoStroke(int stroke) {
 std::optional<int> EditSession::redoStroke(int stroke) {
     record({EditCommand::Kind::Redo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr, nullptr});
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
-    if (strokes_[static_cast<std::size_t>(stroke)].worldAfter) {
-        Stroke& reset = strokes_[static_cast<std::size_t>(stroke)];
+    if (Stroke& reset = strokes_[static_cast<std::size_t>(stroke)]; reset.worldAfter) {
         if (sheet_ != reset.sheetBefore || pressed_) return std::nullopt;
-        releaseGrab();
-        setSettle(Settle::None);
         // The sheet moved on since the undo: an undo of this redo gives back that.
+        releaseGrab();
         reset.worldBefore = std::make_shared<const World>(sim_.world());
         swapSheet(*reset.worldAfter, reset.sheetAfter);
         return 0;

@@ -202,7 +202,8 @@ class EditSession {
     StrokeEnd keepStroke(Stroke stroke, StrokeKind kind);
     void beginLog();
     void record(EditCommand command);
-    // Puts `world` in place as sheet `sheet`, keeping the clock and the tool.
+    // Puts `world` in place as sheet `sheet`, keeping the clock and the tool; a grab is
+    // let go and a settle ends.
     void swapSheet(const World& world, int sheet);
 
     Simulation sim_;
@@ -213,7 +214,6 @@ class EditSession {
     Index strokeStart_ = 0;
     std::vector<Stroke> strokes_;
     int sheet_ = 0;         // which sheet is in place: 0 the first, each Reset a new one
-    int sheetCount_ = 1;    // sheets made so far
     SheetLook pressedLook_; // the sheet when the current stroke began
     MeshSize pressedMesh_;
     void beginStroke();

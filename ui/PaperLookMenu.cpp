@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QFileInfo>
 #include <QMenu>
 #include <QSettings>
 #include <QWidget>
@@ -49,17 +50,17 @@ PaperLookMenu::PaperLookMenu(QWidget* window) : QObject(window) {
         PaperLook next = look_;
         next.color = {static_cast<float>(c.redF()), static_cast<float>(c.greenF()),
                       static_cast<float>(c.blueF())};
-        setLook(next, QSettings().value(QLatin1String(kImageSetting)).toString());
+        setLook(next);
     });
     connect(plain_, &QAction::triggered, this, [this] {
         PaperLook next = look_;
         next.texture = PaperTexture::Plain;
-        setLook(next, QString());
+        setLook(next);
     });
     connect(grain_, &QAction::triggered, this, [this] {
         PaperLook next = look_;
         next.texture = PaperTexture::Grain;
-        setLook(next, QString());
+        setLook(next);
     });
     connect(image_, &QAction::triggered, this, [this] {
         const QString path = chooseImage ? chooseImage() : QString();
@@ -71,7 +72,7 @@ PaperLookMenu::PaperLookMenu(QWidget* window) : QObject(window) {
             checkCurrentTexture(); // cancelled or refused: the look stays
             return;
         }
-        setLook(next, path);
+        setLook(next);
     });
     restore();
 }
@@ -82,29 +83,20 @@ void PaperLookMenu::restore() {
     if (const auto c =
             paperColorFromText(settings.value(QLatin1String(kColorSetting)).toString(), nullptr))
         look.color = *c;
-    const QString texture = settings.value(QLatin1String(kTextureSetting)).toString();
-    const QString path = settings.value(QLatin1String(kImageSetting)).toString();
-    if (texture == QLatin1String("grain"))
-        look.texture = PaperTexture::Grain;
-    else if (texture == QLatin1String("image") && !path.isEmpty())
-        // A picture gone since the last session leaves the paper plain, quietly: the
-        // session starts without a dialog about a view setting.
-        setPaperTextureFromText(path, &look, nullptr);
+    // A picture gone since the last session leaves the paper plain, quietly: the
+    // session starts without a dialog about a view setting.
+    setPaperTextureFromText(settings.value(QLatin1String(kTextureSetting)).toString(), &look,
+                            nullptr);
     look_ = look;
     color_->setIcon(swatch(look_.color));
     checkCurrentTexture();
 }
 
-void PaperLookMenu::setLook(const PaperLook& look, const QString& imagePath) {
+void PaperLookMenu::setLook(const PaperLook& look) {
     look_ = look;
     QSettings settings;
     settings.setValue(QLatin1String(kColorSetting), paperColorText(look.color));
-    const char* texture = look.texture == PaperTexture::Grain   ? "grain"
-                          : look.texture == PaperTexture::Image ? "image"
-                                                                : "plain";
-    settings.setValue(QLatin1String(kTextureSetting), QLatin1String(texture));
-    if (look.texture == PaperTexture::Image)
-        settings.setValue(QLatin1String(kImageSetting), imagePath);
+    settings.setValue(QLatin1String(kTextureSetting), paperTextureText(look));
     color_->setIcon(swatch(look_.color));
     checkCurrentTexture();
     retranslate(); // the picture's name is in its entry
@@ -130,8 +122,9 @@ void PaperLookMenu::retranslate() {
     color_->setText(tr("Paper &Colour…"));
     plain_->setText(tr("&Plain"));
     grain_->setText(tr("Paper &Grain"));
-    image_->setText(look_.texture == PaperTexture::Image ? tr("P&icture: %1…").arg(look_.imageName)
-                                                         : tr("P&icture…"));
+    image_->setText(look_.texture == PaperTexture::Image
+                        ? tr("P&icture: %1…").arg(QFileInfo(look_.imagePath).fileName())
+                        : tr("P&icture…"));
     image_->setToolTip(tr("Print a picture over the whole sheet"));
 }
 

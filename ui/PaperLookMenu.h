@@ -21,8 +21,8 @@ class PaperLookMenu : public QObject {
 
   public:
     static constexpr const char* kColorSetting = "look/color";
-    static constexpr const char* kTextureSetting = "look/texture"; // plain, grain, image
-    static constexpr const char* kImageSetting = "look/image";     // the picture's path
+    // plain, grain or the picture's path (setPaperTextureFromText)
+    static constexpr const char* kTextureSetting = "look/texture";
 
     // The actions are children of `window`, named look.color, look.plain, look.grain and
     // look.image, so that the window's action texts and tests find them.
@@ -43,7 +43,7 @@ class PaperLookMenu : public QObject {
 
   private:
     void restore();
-    void setLook(const PaperLook& look, const QString& imagePath);
+    void setLook(const PaperLook& look);
     void checkCurrentTexture();
 
     QMenu* menu_ = nullptr;
