@@ -3,6 +3,7 @@
 #include "Normals.h"
 #include "TopologyEdit.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pf {
@@ -15,12 +16,22 @@ double breakProbability(double l, double l0, double lrl, double nij, double nrl,
     return contraction * lengthRatio * curvature;
 }
 
-double breakProbabilityPerStep(double P, double h, double referenceStep) {
-    if (P <= 0.0) return 0.0;
+double breakProbabilityForGrowth(double P, double growth, double referenceGrowth) {
+    if (P <= 0.0 || !(growth > 0.0)) return 0.0;
     if (P >= 1.0) return 1.0;
-    // 1 - (1 - P)^(h/ref), written with log1p/expm1 to stay accurate for tiny P.
-    return -std::expm1((h / referenceStep) * std::log1p(-P));
+    // 1 - (1 - P)^(growth/ref), with log1p/expm1 to stay accurate for tiny P and growth.
+    return -std::expm1((growth / referenceGrowth) * std::log1p(-P));
 }
+
+namespace {
+
+double contraction(const Sheet& sheet, Index spring) {
+    const auto& S = sheet.springs;
+    const auto& x = sheet.verts.x;
+    return 1.0 - (x[S.a[spring]] - x[S.b[spring]]).norm() / S.rest[spring];
+}
+
+} // namespace
 
 double breakOffset(double l, double l0, double psi) {
     if (!(l < l0)) return 0.0;
@@ -217,15 +228,15 @@ bool canBreak(const Sheet& sheet, Index spring) {
 
 namespace {
 
-// A breakable compressed edge between two triangles, not held at both ends: one that the
-// pass draws a number for (whatever Eq. 10 gives, so that the draws stay in step).
-bool breakCandidate(const Sheet& sheet, Index spring) {
+// A breakable compressed edge between two triangles, not held at both ends and long
+// enough to split: one that Eq. 10 applies to.
+bool breakCandidate(const Sheet& sheet, Index spring, double spacing) {
     if (!canBreak(sheet, spring)) return false;
     const auto& S = sheet.springs;
     const auto& V = sheet.verts;
     const Index i = S.a[spring], j = S.b[spring];
     if (V.pinned[i] && V.pinned[j]) return false;
-    return (V.x[i] - V.x[j]).norm() < S.rest[spring];
+    return (V.x[i] - V.x[j]).norm() < S.rest[spring] && keepsCreaseSpacing(sheet, spring, spacing);
 }
 
 double candidateProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
@@ -242,8 +253,28 @@ double candidateProbability(const Sheet& sheet, const std::vector<Vec3>& normals
 } // namespace
 
 double springBreakProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
-                              double phi) {
-    return breakCandidate(sheet, spring) ? candidateProbability(sheet, normals, spring, phi) : 0.0;
+                              const SimParams& params) {
+    return breakCandidate(sheet, spring, params.material.creaseSpacing)
+               ? candidateProbability(sheet, normals, spring, params.phi)
+               : 0.0;
+}
+
+bool keepsCreaseSpacing(const Sheet& sheet, Index spring, double spacing) {
+    const auto& S = sheet.springs;
+    const auto& X = sheet.verts.X;
+    const Index i = S.a[spring], j = S.b[spring];
+    const Vec2 n = 0.5 * (X[i] + X[j]);
+    // The halves i-n and n-j, then the new edges to the two opposite vertices.
+    if ((X[i] - n).norm() < spacing) return false;
+    for (const Index face : S.faces[spring])
+        if ((X[sheet.oppositeVertex(face, i, j)] - n).norm() < spacing) return false;
+    return true;
+}
+
+void recordCurrentContraction(Sheet& sheet) {
+    auto& peak = sheet.springs.peakContraction;
+    for (Index s = 0; s < sheet.springs.size(); ++s)
+        peak[s] = std::clamp(contraction(sheet, s), 0.0, 1.0);
 }
 
 void computeBreakProbabilities(const Sheet& sheet, const SimParams& params, BreakScratch& scratch) {
@@ -253,7 +284,7 @@ void computeBreakProbabilities(const Sheet& sheet, const SimParams& params, Brea
     computeVertexNormals(sheet, scratch.normals);
     for (Index s = 0; s < count; ++s)
         scratch.probability[s] =
-            static_cast<float>(springBreakProbability(sheet, scratch.normals, s, params.phi));
+            static_cast<float>(springBreakProbability(sheet, scratch.normals, s, params));
 }
 
 int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t step,
@@ -266,14 +297,19 @@ int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t s
     const Index count = sheet.springs.size();
     scratch.probability.assign(static_cast<std::size_t>(count), 0.0f);
     for (Index s = 0; s < count; ++s) {
-        if (!breakCandidate(sheet, s)) continue;
+        if (!breakCandidate(sheet, s, params.material.creaseSpacing)) continue;
         // A triangle split in this pass may have the new vertex opposite, which has no
         // normal yet: its edges wait for the next step (and show 0 until then).
         const auto& faces = sheet.springs.faces[s];
         if (scratch.touched[faces[0]] || scratch.touched[faces[1]]) continue;
         const double P = candidateProbability(sheet, normals, s, params.phi);
         scratch.probability[s] = static_cast<float>(P);
-        const double p = breakProbabilityPerStep(P, params.dt, params.breakReferenceStep);
+        double& peak = sheet.springs.peakContraction[s];
+        const double now = contraction(sheet, s);
+        const double growth = now - peak;
+        if (!(growth > 0.0)) continue;
+        peak = now;
+        const double p = breakProbabilityForGrowth(P, growth, params.breakReferenceContraction);
         if (!(rng.uniform() < p)) continue;
         const Index ev = breakEdge(sheet, s, normals, params.psi, step);
         scratch.probability[s] = 0.0f; // a crease now: it cannot break again

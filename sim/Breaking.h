@@ -14,8 +14,9 @@ namespace pf {
 // Zero for a spring that is not compressed (Eq. 10 is only defined for l < l0).
 double breakProbability(double l, double l0, double lrl, double nij, double nrl, double phi);
 
-// Eq. 10 is read as a probability per reference step; the probability per step of length h.
-double breakProbabilityPerStep(double P, double h, double referenceStep);
+// Eq. 10 is read as a probability per reference growth of an edge's contraction; the
+// probability of a break while the contraction grows by `growth` beyond its peak.
+double breakProbabilityForGrowth(double P, double growth, double referenceGrowth);
 
 // Eq. 11: how far the new vertex moves along the normal, h = ψ/2 sqrt(l0² - l²).
 double breakOffset(double l, double l0, double psi);
@@ -23,6 +24,14 @@ double breakOffset(double l, double l0, double psi);
 // Whether Eq. 10 applies to `spring` at all: a breakable structural edge between two
 // triangles (a border edge has nowhere to put the new vertex's second face).
 bool canBreak(const Sheet& sheet, Index spring);
+
+// Whether breaking `spring` would keep every new edge at least `spacing` long in the
+// material: the finest crease spacing the paper forms (Material::creaseSpacing).
+bool keepsCreaseSpacing(const Sheet& sheet, Index spring, double spacing);
+
+// Sets every spring's peak contraction to the contraction it carries now: a sheet made
+// before load-driven breaking counts as having carried the load it stands under.
+void recordCurrentContraction(Sheet& sheet);
 
 // Breaks structural spring `spring` (which must have two faces): inserts vertex n
 // between its ends, offset by Eq. 11 toward the side the edge bends to, splits both
@@ -41,9 +50,10 @@ bool canRecover(const Sheet& sheet, Index event);
 bool recoverEvent(Sheet& sheet, Index event);
 
 // Eq. 10 for `spring` as the sheet stands (`normals`: its vertex normals): zero where
-// the spring cannot break, is not compressed, or joins two pinned vertices.
+// the spring cannot break, is not compressed, joins two pinned vertices, or is too short
+// to split (keepsCreaseSpacing).
 double springBreakProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
-                              double phi);
+                              const SimParams& params);
 
 // Per-step scratch for the break pass, kept to avoid allocation in the step.
 struct BreakScratch {
@@ -58,8 +68,9 @@ struct BreakScratch {
 // when breaking is off): for a sheet changed outside a step, such as by an undo.
 void computeBreakProbabilities(const Sheet& sheet, const SimParams& params, BreakScratch& scratch);
 
-// Tests every breakable compressed spring with two faces in index order, drawing one
-// uniform number per candidate from rng, at most one break per triangle per step.
+// Tests every breakable compressed spring with two faces in index order, at most one
+// break per triangle per step. A spring whose contraction has grown past its peak draws
+// one uniform number from rng (breakProbabilityForGrowth) and records the new peak.
 // Returns the number of breaks.
 int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t step,
                  BreakScratch& scratch);

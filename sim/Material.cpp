@@ -12,6 +12,7 @@ bool materialPreset(std::string_view name, Material& out) {
         m.stretchStiffness = 5.0e4;  // E ≈ 1 GPa, t ≈ 0.05 mm
         m.bendingStiffness = 1.2e-5; // E t³ / 12(1 − ν²)
         m.yieldCurvature = 200.0;    // 2 ε_y / t
+        m.creaseSpacing = 0.00075;   // 15 t
         m.groundStaticFriction = 0.5;
         m.groundKineticFriction = 0.4;
     } else if (name == "card") {
@@ -20,6 +21,7 @@ bool materialPreset(std::string_view name, Material& out) {
         m.stretchStiffness = 1.2e6;  // E ≈ 4 GPa, t ≈ 0.3 mm
         m.bendingStiffness = 1.0e-2; // E t³ / 12(1 − ν²)
         m.yieldCurvature = 33.0;     // 2 ε_y / t
+        m.creaseSpacing = 0.0045;    // 15 t
         m.groundStaticFriction = 0.4;
         m.groundKineticFriction = 0.3;
     } else {

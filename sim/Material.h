@@ -18,6 +18,10 @@ struct Material {
     // at a strain ε_y ≈ 0.5 %, κ_y = 2 ε_y / t. Bent further, paper keeps the extra
     // curvature when let go (a fold stays); 100/m is a 1 cm radius at t = 0.1 mm.
     double yieldCurvature = 100.0;
+    // The finest crease spacing the paper forms (m): a break inserts no vertex whose new
+    // edges would be shorter in the material. A sharp crease is a few thicknesses wide,
+    // so about 15 thicknesses (docs/model.md, Breaking); it bounds the mesh's refinement.
+    double creaseSpacing = 0.0015;
     // Coulomb friction of the paper against the desk and against the tool.
     double groundStaticFriction = 0.45;
     double groundKineticFriction = 0.35;

@@ -55,7 +55,10 @@ struct SimParams {
     bool hinges = true;
     // A hinge is inserted when |x_r - x_l| falls below this fraction of its rest distance.
     double hingeThreshold = 0.5;
-    // Eq. 10 is a probability per reference step of this length (docs/model.md, Breaking).
+    // Eq. 10 is a probability per this much growth of an edge's contraction beyond any
+    // it carried before (docs/model.md, Breaking): breaks follow loading, not time.
+    double breakReferenceContraction = 0.005;
+    // The jacobi family's contact friction is a fraction per reference step of this length.
     double breakReferenceStep = 1.0 / 60.0;
 
     // Contact: fraction of tangential velocity removed per step while touching.

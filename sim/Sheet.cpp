@@ -12,6 +12,7 @@ Index Sheet::addSpring(Index a, Index b, double rest, SpringKind kind, bool brea
     s.hinged.push_back(0);
     s.faces.push_back({kNone, kNone});
     s.event.push_back(kNone);
+    s.peakContraction.push_back(0.0);
     return s.size() - 1;
 }
 
@@ -58,6 +59,7 @@ void Sheet::reserveFor(Index extraVertices) {
     s.hinged.reserve(ns);
     s.faces.reserve(ns);
     s.event.reserve(ns);
+    s.peakContraction.reserve(ns);
     tris.reserve(nt);
 }
 

@@ -40,6 +40,10 @@ struct Springs {
     // Crease and hinge springs: the event in the log that created them (the paper's
     // "pointers" from the auxiliary spring that make recovery possible); else kNone.
     std::vector<Index> event;
+    // The largest contraction 1 - l/l0 the spring has carried since it was made. Eq. 10
+    // draws only while it grows (docs/model.md, Breaking): paper damages under a load
+    // beyond any it has carried before, not under one it merely goes on carrying.
+    std::vector<double> peakContraction;
 
     Index size() const { return static_cast<Index>(a.size()); }
 };

@@ -1,6 +1,7 @@
 #include "SheetFile.h"
 
 #include "BoundedCbor.h"
+#include "Breaking.h"
 #include "InputFile.h"
 #include "Integrator.h"
 #include "OutputFile.h"
@@ -124,6 +125,7 @@ QCborMap paramsToCbor(const SimParams& p) {
     m[QLatin1String("hinges")] = p.hinges;
     m[QLatin1String("hingeThreshold")] = p.hingeThreshold;
     m[QLatin1String("breakReferenceStep")] = p.breakReferenceStep;
+    m[QLatin1String("breakReferenceContraction")] = p.breakReferenceContraction;
     m[QLatin1String("groundFriction")] = p.groundFriction;
     m[QLatin1String("sphereFriction")] = p.sphereFriction;
     QCborMap mat;
@@ -132,6 +134,7 @@ QCborMap paramsToCbor(const SimParams& p) {
     mat[QLatin1String("stretchStiffness")] = p.material.stretchStiffness;
     mat[QLatin1String("bendingStiffness")] = p.material.bendingStiffness;
     mat[QLatin1String("yieldCurvature")] = p.material.yieldCurvature;
+    mat[QLatin1String("creaseSpacing")] = p.material.creaseSpacing;
     mat[QLatin1String("groundStaticFriction")] = p.material.groundStaticFriction;
     mat[QLatin1String("groundKineticFriction")] = p.material.groundKineticFriction;
     mat[QLatin1String("toolStaticFriction")] = p.material.toolStaticFriction;
@@ -144,7 +147,7 @@ QCborMap paramsToCbor(const SimParams& p) {
 }
 
 QCborMap sheetToCbor(const Sheet& s) {
-    QByteArray x, v, m, X, pinned, a, b, rest, kind, breakable, hinged, faces, event, tv, te;
+    QByteArray x, v, m, X, pinned, a, b, rest, kind, breakable, hinged, faces, event, peak, tv, te;
     for (Index i = 0; i < s.verts.size(); ++i) {
         putVec3(x, s.verts.x[i]);
         putVec3(v, s.verts.v[i]);
@@ -164,6 +167,7 @@ QCborMap sheetToCbor(const Sheet& s) {
         putI32(faces, S.faces[i][0]);
         putI32(faces, S.faces[i][1]);
         putI32(event, S.event[i]);
+        putF64(peak, S.peakContraction[i]);
     }
     for (const Triangle& t : s.tris) {
         for (Index w : t.v) putI32(tv, w);
@@ -188,6 +192,7 @@ QCborMap sheetToCbor(const Sheet& s) {
     o[QLatin1String("hinged")] = hinged;
     o[QLatin1String("faces")] = faces;
     o[QLatin1String("springEvent")] = event;
+    o[QLatin1String("peakContraction")] = peak;
     o[QLatin1String("triangleVertices")] = tv;
     o[QLatin1String("triangleEdges")] = te;
     o[QLatin1String("events")] = packEvents(s.events);
@@ -318,6 +323,9 @@ SimParams paramsFromCbor(const QCborMap& m) {
     p.hinges = boolAt(m, "hinges", w);
     p.hingeThreshold = realAt(m, "hingeThreshold", w, 0.0, 10.0);
     p.breakReferenceStep = realAt(m, "breakReferenceStep", w, 1e-6, 10.0);
+    // Absent from files written while Eq. 10 was read per unit of time: the default.
+    if (m.contains(QLatin1String("breakReferenceContraction")))
+        p.breakReferenceContraction = realAt(m, "breakReferenceContraction", w, 1e-9, 1.0);
     p.groundFriction = realAt(m, "groundFriction", w, 0.0, 1.0);
     p.sphereFriction = realAt(m, "sphereFriction", w, 0.0, 1.0);
     // The material and the xpbd settings came after the first files were written:
@@ -335,6 +343,10 @@ SimParams paramsFromCbor(const QCborMap& m) {
             x.yieldCurvature = realAt(mat, "yieldCurvature", wm, 1e-3, 1e6);
         else if (Material preset; materialPreset(x.name, preset))
             x.yieldCurvature = preset.yieldCurvature;
+        if (mat.contains(QLatin1String("creaseSpacing")))
+            x.creaseSpacing = realAt(mat, "creaseSpacing", wm, 0.0, 1.0);
+        else if (Material preset; materialPreset(x.name, preset))
+            x.creaseSpacing = preset.creaseSpacing;
         x.groundStaticFriction = realAt(mat, "groundStaticFriction", wm, 0.0, 10.0);
         x.groundKineticFriction = realAt(mat, "groundKineticFriction", wm, 0.0, 10.0);
         x.toolStaticFriction = realAt(mat, "toolStaticFriction", wm, 0.0, 10.0);
@@ -437,8 +449,16 @@ Sheet sheetFromCbor(const QCborMap& m) {
         }
         s.paper.quietSteps = static_cast<int>(integerAt(m, "quietSteps", w, 0, 1'000'000'000));
     }
+    // Files from before load-driven breaking hold no peaks: the sheet counts as having
+    // carried the load it stands under, so loading it does not set off a burst of breaks.
+    const bool hasPeaks = m.contains(QLatin1String("peakContraction"));
+    if (hasPeaks) {
+        Unpacker u(bytesAt(m, "peakContraction", w, ns, 8));
+        for (double& peak : s.springs.peakContraction) peak = u.f64();
+    }
     const std::string problem = validateSheet(s);
     if (!problem.empty()) fail(QStringLiteral("sheet: %1").arg(QString::fromStdString(problem)));
+    if (!hasPeaks) recordCurrentContraction(s);
     return s;
 }
 
@@ -559,6 +579,7 @@ const CborBounds& sheetFileBounds() {
                                 "hinges",
                                 "hingeThreshold",
                                 "breakReferenceStep",
+                                "breakReferenceContraction",
                                 "groundFriction",
                                 "sphereFriction",
                                 "material",
@@ -567,6 +588,7 @@ const CborBounds& sheetFileBounds() {
                                 "stretchStiffness",
                                 "bendingStiffness",
                                 "yieldCurvature",
+                                "creaseSpacing",
                                 "groundStaticFriction",
                                 "groundKineticFriction",
                                 "toolStaticFriction",
@@ -606,6 +628,7 @@ const CborBounds& sheetFileBounds() {
                                 "hinged",
                                 "faces",
                                 "springEvent",
+                                "peakContraction",
                                 "triangleVertices",
                                 "triangleEdges",
                                 "events",

@@ -55,6 +55,14 @@ std::uint64_t stateHash(const Sheet& sheet) {
     return h;
 }
 
+Index breaksSince(const Sheet& sheet, std::int64_t firstStep) {
+    Index count = 0;
+    // The log is in step order: only its tail can be recent.
+    for (auto it = sheet.events.rbegin(); it != sheet.events.rend() && it->step >= firstStep; ++it)
+        if (it->kind == EventKind::Break) ++count;
+    return count;
+}
+
 std::uint64_t editedStateHash(const Sheet& sheet) {
     std::uint64_t h = stateHash(sheet);
     for (std::uint8_t pinned : sheet.verts.pinned) h = (h ^ pinned) * 0x100000001b3ULL;

@@ -33,4 +33,8 @@ std::uint64_t editedStateHash(const Sheet& sheet);
 
 double totalMass(const Sheet& sheet);
 
+// Break events logged at `firstStep` or later, recovered ones included: how fast the
+// sheet is breaking (the editor shows it per second, so a user sees damage settle).
+Index breaksSince(const Sheet& sheet, std::int64_t firstStep);
+
 } // namespace pf

@@ -35,7 +35,7 @@ std::string validateSheet(const Sheet& sheet) {
     const std::size_t ns = S.a.size();
     if (S.b.size() != ns || S.rest.size() != ns || S.kind.size() != ns ||
         S.breakable.size() != ns || S.hinged.size() != ns || S.faces.size() != ns ||
-        S.event.size() != ns)
+        S.event.size() != ns || S.peakContraction.size() != ns)
         return "spring arrays differ in length";
     if (!(std::isfinite(sheet.density) && sheet.density > 0.0)) return "density is not positive";
 
@@ -64,6 +64,8 @@ std::string validateSheet(const Sheet& sheet) {
         if (!(std::isfinite(S.rest[s]) && S.rest[s] > 0.0))
             return at + " has a non-positive rest length";
         if (S.breakable[s] > 1 || S.hinged[s] > 1) return at + " has an invalid flag";
+        if (!(S.peakContraction[s] >= 0.0 && S.peakContraction[s] <= 1.0))
+            return at + " has a peak contraction outside [0, 1]";
         const bool structural = S.kind[s] == SpringKind::Structural;
         if (S.breakable[s] && !structural) return at + " is breakable but not structural";
         for (Index f : S.faces[s]) {

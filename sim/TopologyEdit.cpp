@@ -59,6 +59,7 @@ void removeSpringAt(Sheet& sheet, Index s) {
     moveLastInto(S.hinged, s);
     moveLastInto(S.faces, s);
     moveLastInto(S.event, s);
+    moveLastInto(S.peakContraction, s);
 }
 
 void removeTriangleAt(Sheet& sheet, Index t) {

@@ -42,13 +42,80 @@ class TestBreaking : public QObject {
         QCOMPARE(breakProbability(1.1, 1.0, 0.8, 0.0, 0.0, 0.5), 0.0);
     }
 
-    void probabilityPerStepComposes() {
-        // Two steps of h must break as often as one step of 2h: 1-(1-p_h)^2 = p_2h.
-        const double P = 0.3, ref = 1.0 / 60.0;
-        const double ph = breakProbabilityPerStep(P, ref / 2, ref);
-        QVERIFY(std::abs((1 - (1 - ph) * (1 - ph)) - P) < 1e-15);
-        QCOMPARE(breakProbabilityPerStep(P, ref, ref), P);
-        QCOMPARE(breakProbabilityPerStep(0.0, ref, ref), 0.0);
+    void probabilityPerGrowthComposes() {
+        // Growing by g twice must break as often as growing by 2g once: 1-(1-p_g)^2 = p_2g,
+        // so the chance of a break does not depend on how many steps the load took.
+        const double P = 0.3, ref = 1e-3;
+        const double pg = breakProbabilityForGrowth(P, ref / 2, ref);
+        QVERIFY(std::abs((1 - (1 - pg) * (1 - pg)) - P) < 1e-15);
+        QCOMPARE(breakProbabilityForGrowth(P, ref, ref), P);
+        QCOMPARE(breakProbabilityForGrowth(0.0, ref, ref), 0.0);
+        // A load carried, not growing, does not break.
+        QCOMPARE(breakProbabilityForGrowth(P, 0.0, ref), 0.0);
+        QCOMPARE(breakProbabilityForGrowth(P, -ref, ref), 0.0);
+    }
+
+    void aHeldLoadDrawsNothingAGrowingOneDrawsAgain() {
+        // Eq. 10 draws while an edge's contraction grows past the largest it has carried
+        // (docs/model.md, Breaking): however long a load is held, it draws nothing more.
+        Sheet s = test::makeJitteredSheet(8, 8, 3);
+        for (Vec3& x : s.verts.x) x.x() *= 0.9; // every edge along x now contracted
+        SimParams p;
+        p.phi = 0.0;
+        p.breakReferenceContraction = 1e9; // draws, but practically never breaks
+        Rng rng(1);
+        BreakScratch scratch;
+        QCOMPARE(runBreakPass(s, p, rng, 0, scratch), 0);
+        const auto firstPeaks = s.springs.peakContraction;
+        int loaded = 0;
+        for (Index k = 0; k < s.springs.size(); ++k)
+            if (firstPeaks[k] > 0.0) {
+                ++loaded;
+                const Vec3 d = s.verts.x[s.springs.a[k]] - s.verts.x[s.springs.b[k]];
+                QCOMPARE(firstPeaks[k], 1.0 - d.norm() / s.springs.rest[k]);
+            }
+        QVERIFY2(loaded > 20, "the squeeze loaded too few edges to show anything");
+        const Rng::State held = rng.state();
+        for (int step = 1; step <= 100; ++step) QCOMPARE(runBreakPass(s, p, rng, step, scratch), 0);
+        QVERIFY2(rng.state() == held, "a load that did not grow drew numbers");
+        QVERIFY(s.springs.peakContraction == firstPeaks);
+        for (Vec3& x : s.verts.x) x.x() *= 0.99;
+        runBreakPass(s, p, rng, 101, scratch);
+        QVERIFY2(rng.state() != held, "a growing load drew nothing");
+        for (Index k = 0; k < s.springs.size(); ++k)
+            QVERIFY(s.springs.peakContraction[k] >= firstPeaks[k]);
+    }
+
+    void noBreakSplitsFinerThanTheCreaseSpacing() {
+        // Every edge of this sheet is squeezed and Eq. 10 cannot miss (growth beyond any
+        // reference), so only the crease spacing decides what may split.
+        Sheet s = test::makeJitteredSheet(5, 5, 4);
+        SimParams p;
+        p.phi = 0.0;
+        p.breakReferenceContraction = 1e-12;
+        double shortest = 1e9;
+        for (Index k = 0; k < s.springs.size(); ++k)
+            if (s.springs.kind[k] == SpringKind::Structural)
+                shortest = std::min(shortest, s.materialDistance(s.springs.a[k], s.springs.b[k]));
+        // Room for one split of the shortest edges, not for two.
+        p.material.creaseSpacing = 0.3 * shortest;
+        Rng rng(2);
+        BreakScratch scratch;
+        int breaks = 0;
+        for (int step = 0; step < 60; ++step) {
+            for (Vec3& x : s.verts.x) x *= 0.995;
+            breaks += runBreakPass(s, p, rng, step, scratch);
+        }
+        QVERIFY2(breaks > 0, "nothing broke, so the spacing was never tested");
+        for (Index k = 0; k < s.springs.size(); ++k) {
+            if (s.springs.kind[k] != SpringKind::Structural) continue;
+            const double l = s.materialDistance(s.springs.a[k], s.springs.b[k]);
+            QVERIFY2(l >= p.material.creaseSpacing,
+                     qPrintable(QStringLiteral("edge %1 is %2 long in the material, under %3")
+                                    .arg(k)
+                                    .arg(l)
+                                    .arg(p.material.creaseSpacing)));
+        }
     }
 
     void offsetOfEq11ByHand() {
