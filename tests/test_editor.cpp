@@ -67,9 +67,28 @@ QPoint viewportCentre(MainWindow& w) {
     return w.viewport()->rect().center();
 }
 
+void moveMouse(QWidget* view, const QPoint& p, Qt::MouseButtons buttons = Qt::NoButton);
+
+// One push stroke: press in the middle of the sheet, step the (paused) simulation for
+// a second while dragging across, release.
+void pushAcross(MainWindow& w) {
+    Viewport* view = w.viewport();
+    QPoint p = viewportCentre(w) + QPoint(-60, 0);
+    moveMouse(view, p);
+    QTest::mousePress(view, Qt::LeftButton, {}, p);
+    for (int k = 0; k < 240; ++k) {
+        if (k % 8 == 0) {
+            p += QPoint(4, 1);
+            moveMouse(view, p, Qt::LeftButton);
+        }
+        w.simulation()->stepOnce();
+    }
+    QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+}
+
 // Delivered synchronously: QTest::mouseMove goes through the cursor position and can
 // arrive late on a loaded machine.
-void moveMouse(QWidget* view, const QPoint& p, Qt::MouseButtons buttons = Qt::NoButton) {
+void moveMouse(QWidget* view, const QPoint& p, Qt::MouseButtons buttons) {
     QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, buttons,
                      Qt::NoModifier);
     QApplication::sendEvent(view, &move);
@@ -227,22 +246,9 @@ class TestEditor : public QObject {
     }
 
     void pushStrokeBreaksAndUndoRedoRestoreTheCount() {
-        Viewport* view = window->viewport();
         const SimulationStatus before = settledStatus(*window);
         QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
-        // One stroke: press in the middle of the sheet, step the (paused) simulation
-        // while dragging across, release.
-        QPoint p = viewportCentre(*window) + QPoint(-60, 0);
-        moveMouse(view, p);
-        QTest::mousePress(view, Qt::LeftButton, {}, p);
-        for (int k = 0; k < 240; ++k) {
-            if (k % 8 == 0) {
-                p += QPoint(4, 1);
-                moveMouse(view, p, Qt::LeftButton);
-            }
-            window->simulation()->stepOnce();
-        }
-        QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+        pushAcross(*window);
         QVERIFY(waitForCount(recorded, 1));
         const SimulationStatus after = settledStatus(*window);
         qInfo("stroke: %d -> %d breaks", before.breaks, after.breaks);
@@ -438,6 +444,31 @@ class TestEditor : public QObject {
         QTest::qWait(50);
         QCOMPARE(clippedLabels(*window), QStringList());
         QVERIFY(installLanguage(QStringLiteral("en")));
+    }
+
+    // The Solver dock and the status bar show how fast the sheet breaks: while the tool
+    // pushes, and not once the sheet has come to rest (docs/model.md, Breaking).
+    void theBreakRateShowsTheDamageSettle() {
+        QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        pushAcross(*window);
+        QVERIFY(waitForCount(recorded, 1));
+        const SimulationStatus pushed = settledStatus(*window);
+        QVERIFY2(pushed.breaksLastSecond > 0, "the stroke broke nothing in its last second");
+        const QLabel* rate = window->solverPanel()->breakRateLabel();
+        QTRY_COMPARE(rate->text(), QStringLiteral("%1 per second").arg(pushed.breaksLastSecond));
+        // Once the sheet lies still it breaks no more. It springs back and settles for a
+        // while first (at 1280x1024: 41, then 4-5 breaks per second until 3 s after the
+        // stroke, 0 from 3.5 s), so the rate is read 5 s and 6 s after the stroke.
+        for (int second = 5; second <= 6; ++second) {
+            const int steps = second == 5 ? 1200 : 240;
+            for (int k = 0; k < steps; ++k) window->simulation()->stepOnce();
+            QCOMPARE(settledStatus(*window).breaksLastSecond, 0);
+        }
+        QTRY_COMPARE(rate->text(), QStringLiteral("0 per second"));
+        bool shownInStatusBar = false;
+        for (const QLabel* label : window->statusBar()->findChildren<QLabel*>())
+            shownInStatusBar = shownInStatusBar || label->text().contains(QStringLiteral("(0/s)"));
+        QVERIFY(shownInStatusBar);
     }
 
     void solverDockChoosesTheIntegratorAndShowsLiveStrain() {

@@ -682,6 +682,21 @@
         <source>The paper&apos;s weight, stretch and bending stiffness and friction, used by the xpbd integrator: tissue 20 g/m², office 80 g/m², card 250 g/m².</source>
         <translation>Gewicht, Dehn- und Biegesteifigkeit und Reibung des Papiers, vom xpbd-Integrator verwendet: Seidenpapier 20 g/m², Büropapier 80 g/m², Karton 250 g/m².</translation>
     </message>
+    <message numerus="yes">
+        <source>%n per second</source>
+        <translation>
+            <numerusform>%n pro Sekunde</numerusform>
+            <numerusform>%n pro Sekunde</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Breaks</source>
+        <translation>Brüche</translation>
+    </message>
+    <message>
+        <source>Breaks in the last second of simulated time: paper breaks while it is loaded further, and stops when the load stops</source>
+        <translation>Brüche in der letzten simulierten Sekunde: Papier bricht, solange die Last weiter wächst, und hört auf, wenn sie aufhört</translation>
+    </message>
 </context>
 <context>
     <name>pf::StatusReadout</name>
@@ -694,8 +709,8 @@
         <translation>Schritt %1 µs</translation>
     </message>
     <message>
-        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
-        <translation>%1 Knoten · %2 Federn · %3 Brüche · %4 Scharniere</translation>
+        <source>%1 vertices · %2 springs · %3 breaks (%4/s) · %5 hinges</source>
+        <translation>%1 Knoten · %2 Federn · %3 Brüche (%4/s) · %5 Scharniere</translation>
     </message>
 </context>
 <context>

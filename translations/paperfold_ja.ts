@@ -678,6 +678,20 @@
         <source>The paper&apos;s weight, stretch and bending stiffness and friction, used by the xpbd integrator: tissue 20 g/m², office 80 g/m², card 250 g/m².</source>
         <translation>xpbd 積分器が使う紙の重さ、伸び剛性、曲げ剛性、摩擦: ティッシュ 20 g/m²、コピー用紙 80 g/m²、厚紙 250 g/m²。</translation>
     </message>
+    <message numerus="yes">
+        <source>%n per second</source>
+        <translation>
+            <numerusform>毎秒 %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Breaks</source>
+        <translation>破断</translation>
+    </message>
+    <message>
+        <source>Breaks in the last second of simulated time: paper breaks while it is loaded further, and stops when the load stops</source>
+        <translation>シミュレーション時間の直近 1 秒間の破断数: 紙は荷重が増え続ける間に破断し、荷重が止まると破断も止まります</translation>
+    </message>
 </context>
 <context>
     <name>pf::StatusReadout</name>
@@ -690,8 +704,8 @@
         <translation>ステップ %1 µs</translation>
     </message>
     <message>
-        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
-        <translation>頂点 %1 · ばね %2 · 破断 %3 · ヒンジ %4</translation>
+        <source>%1 vertices · %2 springs · %3 breaks (%4/s) · %5 hinges</source>
+        <translation>頂点 %1 · ばね %2 · 破断 %3 (%4/秒) · ヒンジ %5</translation>
     </message>
 </context>
 <context>

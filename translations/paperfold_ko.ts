@@ -678,6 +678,20 @@
         <source>The paper&apos;s weight, stretch and bending stiffness and friction, used by the xpbd integrator: tissue 20 g/m², office 80 g/m², card 250 g/m².</source>
         <translation>xpbd 적분기가 쓰는 종이의 무게, 늘임 강성, 굽힘 강성, 마찰: 티슈 20 g/m², 사무용지 80 g/m², 판지 250 g/m².</translation>
     </message>
+    <message numerus="yes">
+        <source>%n per second</source>
+        <translation>
+            <numerusform>초당 %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Breaks</source>
+        <translation>파단</translation>
+    </message>
+    <message>
+        <source>Breaks in the last second of simulated time: paper breaks while it is loaded further, and stops when the load stops</source>
+        <translation>시뮬레이션 시간 최근 1초 동안의 파단 수: 종이는 하중이 더 커지는 동안 파단되고, 하중이 멈추면 파단도 멈춥니다</translation>
+    </message>
 </context>
 <context>
     <name>pf::StatusReadout</name>
@@ -690,8 +704,8 @@
         <translation>단계 %1 µs</translation>
     </message>
     <message>
-        <source>%1 vertices · %2 springs · %3 breaks · %4 hinges</source>
-        <translation>정점 %1 · 스프링 %2 · 파단 %3 · 힌지 %4</translation>
+        <source>%1 vertices · %2 springs · %3 breaks (%4/s) · %5 hinges</source>
+        <translation>정점 %1 · 스프링 %2 · 파단 %3 (%4/초) · 힌지 %5</translation>
     </message>
 </context>
 <context>

@@ -128,6 +128,8 @@ void SimulationWorker::publish(double stepSeconds) {
     const SheetStats stats = computeStats(w.sheet);
     st.breaks = stats.breaks;
     st.hinges = stats.hinges;
+    const auto secondOfSteps = static_cast<std::int64_t>(std::lround(1.0 / w.params.dt));
+    st.breaksLastSecond = static_cast<int>(breaksSince(w.sheet, w.stepCount - secondOfSteps));
     st.maxStrain = stats.maxStrain;
     st.rmsStrain = stats.rmsStrain;
     st.playing = playing_;

@@ -35,6 +35,8 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
     stepTime_ = new QLabel(this);
     strainTitle_ = new QLabel(this);
     strain_ = new QLabel(this);
+    breakRateTitle_ = new QLabel(this);
+    breakRate_ = new QLabel(this);
     openChart_ = new QPushButton(this);
     int r = 0;
     for (auto [label, field] :
@@ -50,6 +52,8 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
     grid->addWidget(stepTime_, r++, 1);
     grid->addWidget(strainTitle_, r, 0);
     grid->addWidget(strain_, r++, 1);
+    grid->addWidget(breakRateTitle_, r, 0);
+    grid->addWidget(breakRate_, r++, 1);
     grid->addWidget(openChart_, r++, 0, 1, 2);
     grid->setRowStretch(r, 1);
 
@@ -96,6 +100,7 @@ void SolverPanel::showStatus(const SimulationStatus& status) {
     strain_->setText(tr("max %1 %, RMS %2 %")
                          .arg(100.0 * status.maxStrain, 0, 'f', 2)
                          .arg(100.0 * status.rmsStrain, 0, 'f', 3));
+    breakRate_->setText(tr("%n per second", nullptr, status.breaksLastSecond));
 }
 
 void SolverPanel::changeEvent(QEvent* event) {
@@ -122,6 +127,9 @@ void SolverPanel::retranslate() {
     stepTimeLabel_->setText(tr("Step time"));
     strainTitle_->setText(tr("Strain"));
     strain_->setToolTip(tr("|l/l0 - 1| over the structural springs, live"));
+    breakRateTitle_->setText(tr("Breaks"));
+    breakRate_->setToolTip(tr("Breaks in the last second of simulated time: paper breaks "
+                              "while it is loaded further, and stops when the load stops"));
     openChart_->setText(tr("Open Latest Chart…"));
     openChart_->setToolTip(
         tr("Show the newest speed–accuracy chart written by 'paperfold bench'."));

@@ -30,6 +30,7 @@ class SolverPanel : public QWidget {
     QSpinBox* iterationsBox() const { return iterations_; }
     QCheckBox* gravityBox() const { return gravityOutside_; }
     QLabel* strainLabel() const { return strain_; }
+    QLabel* breakRateLabel() const { return breakRate_; }
 
   signals:
     // A user edit of the parameter `what` (each its own undo step).
@@ -55,6 +56,7 @@ class SolverPanel : public QWidget {
     QCheckBox* gravityOutside_ = nullptr;
     QLabel* stepTime_ = nullptr;
     QLabel* strain_ = nullptr;
+    QLabel *breakRateTitle_ = nullptr, *breakRate_ = nullptr;
     QPushButton* openChart_ = nullptr;
 };
 

@@ -21,10 +21,11 @@ void StatusReadout::show(const SimulationStatus& st) {
     }
     fps_->setText(tr("%1 fps").arg(fpsValue_, 0, 'f', 0));
     step_->setText(tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0));
-    counts_->setText(tr("%1 vertices · %2 springs · %3 breaks · %4 hinges")
+    counts_->setText(tr("%1 vertices · %2 springs · %3 breaks (%4/s) · %5 hinges")
                          .arg(st.vertices)
                          .arg(st.springs)
                          .arg(st.breaks)
+                         .arg(st.breaksLastSecond)
                          .arg(st.hinges));
 }
 
