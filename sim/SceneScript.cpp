@@ -22,11 +22,28 @@ void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, Sp
         sphere.center = next;
         sphere.active = true;
     }
+    auto& V = sheet.verts;
     for (const PinGroup& g : script.pins) {
-        const Vec3 v = t < g.until ? g.velocity : Vec3::Zero();
+        if (t < g.release && t + h >= g.release) {
+            for (Index i : g.vertices) V.pinned[i] = 0;
+            continue;
+        }
+        const bool moving = t < g.until;
+        // The exact chord of the turn over the step, so that positions stay on their
+        // circles (integrated as x += h v) instead of spiralling outward.
+        const Eigen::AngleAxisd turn(g.turnRate * h, g.axis);
         // A vertex the user has unpinned is the forces' again.
-        for (Index i : g.vertices)
-            if (sheet.verts.pinned[i] && i != held) sheet.verts.v[i] = v;
+        for (Index i : g.vertices) {
+            if (!V.pinned[i] || i == held) continue;
+            if (!moving) {
+                V.v[i].setZero();
+                continue;
+            }
+            V.v[i] = g.velocity;
+            if (g.turnRate == 0.0) continue;
+            const Vec3 arm = V.x[i] - g.pivot;
+            V.v[i] += (turn * arm - arm) / h;
+        }
     }
 }
 

@@ -3,6 +3,7 @@
 #include "Collisions.h"
 #include "Sheet.h"
 
+#include <limits>
 #include <vector>
 
 namespace pf {
@@ -13,11 +14,19 @@ struct SphereKey {
     Vec3 center = Vec3::Zero();
 };
 
-// Pinned vertices that move at a constant velocity until a time, then stand still.
+// Pinned vertices that move until a time, then stand still: at a constant velocity,
+// turning at a constant rate about an axis, or both; optionally let go at a time.
 struct PinGroup {
     std::vector<Index> vertices;
     Vec3 velocity = Vec3::Zero();
+    // Turning about the line through `pivot` along the unit vector `axis`, in rad/s
+    // (right-handed); 0: no turning.
+    Vec3 pivot = Vec3::Zero();
+    Vec3 axis = Vec3::UnitX();
+    double turnRate = 0.0;
     double until = 0.0;
+    // The step that reaches this time unpins the group's vertices; infinity: never.
+    double release = std::numeric_limits<double>::infinity();
 };
 
 struct SceneScript {

@@ -83,6 +83,36 @@ World compressScene(const SceneOptions& options) {
     return w;
 }
 
+World foldScene(const SceneOptions& options) {
+    World w = baseWorld("fold", options, 0.0);
+    const SheetSpec spec = sceneSpec(options);
+    // The far short edge is lifted and turned over the middle of the sheet onto the near
+    // half in 1.5 s (about the line across the middle, 3 mm up, so that it comes down
+    // 6 mm above the near edge), held there while the sphere rolls along the fold and
+    // presses it to 4 mm, and let go once the sphere has lifted off.
+    constexpr double kCarry = 1.5, kRelease = 2.7;
+    PinGroup edge;
+    for (int c = 0; c < spec.columns; ++c)
+        edge.vertices.push_back(vertexAt(spec, c, spec.rows - 1));
+    for (Index i : edge.vertices) w.sheet.verts.pinned[i] = 1;
+    edge.pivot = Vec3(0.0, 0.003, 0.0);
+    edge.axis = -Vec3::UnitX(); // from +z over the top to -z
+    edge.turnRate = std::numbers::pi / kCarry;
+    edge.until = kCarry;
+    edge.release = kRelease;
+    w.script.pins.push_back(edge);
+    const double R = 0.03, reach = 0.5 * spec.width + R + 0.015, pressed = R + 0.004;
+    w.sphere.radius = R;
+    w.script.sphereKeys = {{0.0, Vec3(-reach, 0.3, 0.0)},
+                           {1.55, Vec3(-reach, 0.3, 0.0)},
+                           {1.6, Vec3(-reach, pressed, 0.0)},
+                           {2.6, Vec3(reach, pressed, 0.0)},
+                           {2.65, Vec3(reach, 0.3, 0.0)}};
+    w.sphere.center = w.script.sphereKeys.front().center;
+    w.sphere.active = true;
+    return w;
+}
+
 World dropScene(const SceneOptions& options) {
     World w = baseWorld("drop", options, 0.0);
     // Tilted 45° about x, its lower edge 4.5 cm above the ground: springs lie along
@@ -110,7 +140,7 @@ void setMaterial(World& world, const Material& material) {
 }
 
 const std::vector<std::string>& sceneNames() {
-    static const std::vector<std::string> names{"press", "drape", "compress", "drop"};
+    static const std::vector<std::string> names{"press", "drape", "compress", "drop", "fold"};
     return names;
 }
 
@@ -124,6 +154,7 @@ std::optional<World> makeScene(std::string_view name, const SceneOptions& option
     if (name == "drape") return drapeScene(options);
     if (name == "compress") return compressScene(options);
     if (name == "drop") return dropScene(options);
+    if (name == "fold") return foldScene(options);
     return std::nullopt;
 }
 

@@ -25,6 +25,8 @@ inline constexpr double kMaxSheetSide = 2.0;
 //   drape    pinned at two corners, falls under gravity; breaking off
 //   compress two opposite edges pushed toward each other: the sheet buckles and creases
 //   drop     a sheet tilted 45° falls onto the ground
+//   fold     one short edge is turned over onto the other, the fold pressed by the sphere
+//            and let go: whether the crease holds the fold
 // Pins and arches follow the sheet's size. Returns nullopt for an unknown name, a
 // resolution outside [kMinResolution, kMaxResolution] or a side outside the limits.
 std::optional<World> makeScene(std::string_view name, const SceneOptions& options = {});

@@ -547,6 +547,19 @@ World worldFromCbor(const QCborMap& root) {
         group.velocity = uvel.vec3();
         if (!group.velocity.allFinite()) fail(QStringLiteral("script.pins.velocity: not finite"));
         group.until = realAt(gm, "until", wsc, -1e12, 1e12);
+        // Turning and letting go came later: a group without them only translates.
+        if (gm.contains(QLatin1String("turnRate"))) {
+            group.turnRate = realAt(gm, "turnRate", wsc, -1e3, 1e3);
+            Unpacker up(bytesAt(gm, "pivot", wsc, 1, 24)), ua(bytesAt(gm, "axis", wsc, 1, 24));
+            group.pivot = up.vec3();
+            group.axis = ua.vec3();
+            if (!group.pivot.allFinite() || group.pivot.cwiseAbs().maxCoeff() > 1e4)
+                fail(QStringLiteral("script.pins.pivot: not a point within 10 km"));
+            if (!(std::abs(group.axis.norm() - 1.0) < 1e-9))
+                fail(QStringLiteral("script.pins.axis: not a unit vector"));
+        }
+        if (gm.contains(QLatin1String("release")))
+            group.release = realAt(gm, "release", wsc, -1e12, 1e12);
         world.script.pins.push_back(std::move(group));
     }
     return world;
@@ -609,6 +622,10 @@ const CborBounds& sheetFileBounds() {
                                 "pins",
                                 "vertices",
                                 "until",
+                                "turnRate",
+                                "pivot",
+                                "axis",
+                                "release",
                                 "sheet",
                                 "density",
                                 "vertexCount",
@@ -639,7 +656,7 @@ const CborBounds& sheetFileBounds() {
                                 "quietSteps"})
             b.knownKeys.insert(QString::fromLatin1(key));
         // The deepest path is root → script → pins → group → value; at most 1000 pin
-        // groups of three entries make the most values a valid file holds.
+        // groups of seven entries make the most values a valid file holds.
         b.maxDepth = 6;
         b.maxValues = 20000;
         return b;
@@ -694,6 +711,15 @@ QByteArray encodeWorld(const World& world) {
         gm[QLatin1String("vertices")] = ids;
         gm[QLatin1String("velocity")] = vel;
         gm[QLatin1String("until")] = g.until;
+        if (g.turnRate != 0.0) {
+            QByteArray pivot, axis;
+            putVec3(pivot, g.pivot);
+            putVec3(axis, g.axis);
+            gm[QLatin1String("turnRate")] = g.turnRate;
+            gm[QLatin1String("pivot")] = pivot;
+            gm[QLatin1String("axis")] = axis;
+        }
+        if (std::isfinite(g.release)) gm[QLatin1String("release")] = g.release;
         pins.append(gm);
     }
     script[QLatin1String("pins")] = pins;

@@ -241,6 +241,10 @@
         <source>Start the current scene again (Edit ▸ Undo gives it back)</source>
         <translation>Die aktuelle Szene neu beginnen (Bearbeiten ▸ Rückgängig holt sie zurück)</translation>
     </message>
+    <message>
+        <source>&amp;Fold (one edge turned over onto the other)</source>
+        <translation>Fal&amp;ten (eine Kante auf die andere umgeschlagen)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>

@@ -237,6 +237,10 @@
         <source>Start the current scene again (Edit ▸ Undo gives it back)</source>
         <translation>現在のシーンを最初からやり直します (編集 ▸ 元に戻す で戻せます)</translation>
     </message>
+    <message>
+        <source>&amp;Fold (one edge turned over onto the other)</source>
+        <translation>折る（片方の端をもう一方に重ねる）(&amp;F)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>

@@ -237,6 +237,10 @@
         <source>Start the current scene again (Edit ▸ Undo gives it back)</source>
         <translation>현재 장면을 처음부터 다시 시작합니다 (편집 ▸ 실행 취소로 되돌릴 수 있음)</translation>
     </message>
+    <message>
+        <source>&amp;Fold (one edge turned over onto the other)</source>
+        <translation>접기 (한쪽 끝을 다른 쪽 위로 넘김)(&amp;F)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>

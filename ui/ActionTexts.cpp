@@ -17,6 +17,7 @@ void ActionTexts::apply(const QObject* window) {
     set("new.drape", tr("&Drape (hanging sheet)"));
     set("new.compress", tr("&Compress (edges pushed together)"));
     set("new.drop", tr("D&rop (tilted sheet falls)"));
+    set("new.fold", tr("&Fold (one edge turned over onto the other)"));
     set("open", tr("&Open…"));
     set("save", tr("&Save"));
     set("saveAs", tr("Save &As…"));

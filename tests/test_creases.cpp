@@ -1,0 +1,91 @@
+// Creases that stay (docs/model.md, Creases): paper keeps a fold once it has been
+// pressed into it; the model's breaks and hinges are what carry that memory.
+#include "Scenes.h"
+#include "SheetStats.h"
+#include "Simulation.h"
+
+#include <QtTest>
+#include <numbers>
+
+using namespace pf;
+
+namespace {
+
+// The angle the sheet is folded by about the line across its middle, in degrees: 0 flat,
+// 180 folded flat onto itself. Measured between the centres of the strips a quarter of
+// the length to either side of the fold, seen from the fold line's centre.
+double foldAngle(const Sheet& s, double length) {
+    const double band = 0.02;
+    Vec3 sum[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+    int count[3] = {0, 0, 0};
+    for (Index i = 0; i < s.verts.size(); ++i) {
+        const double along = s.verts.X[i].y();
+        for (int k = 0; k < 3; ++k) {
+            const double centre = (k - 1) * 0.25 * length;
+            if (std::abs(along - centre) <= band) {
+                sum[k] += s.verts.x[i];
+                ++count[k];
+            }
+        }
+    }
+    const Vec3 fold = sum[1] / count[1];
+    const Vec3 nearSide = sum[0] / count[0] - fold, farSide = sum[2] / count[2] - fold;
+    const double opening =
+        std::acos(std::clamp(nearSide.normalized().dot(farSide.normalized()), -1.0, 1.0));
+    return 180.0 - opening * 180.0 / std::numbers::pi;
+}
+
+struct FoldRun {
+    double whenLetGo = 0.0, after2s = 0.0, after5s = 0.0, after20s = 0.0;
+};
+
+FoldRun runFold(bool damage) {
+    World w = *makeScene("fold");
+    w.params.gravityOutsideFilter = true; // the editor's setting
+    w.params.breaking = w.params.hinges = damage;
+    const double length = SceneOptions{}.length;
+    const double release = w.script.pins.front().release;
+    Simulation sim(std::move(w));
+    FoldRun r;
+    auto runUntil = [&](double t) {
+        while (sim.world().time < t) QCOMPARE(sim.step(), StepStatus::Ok);
+    };
+    runUntil(release);
+    r.whenLetGo = foldAngle(sim.world().sheet, length);
+    runUntil(release + 2.0);
+    r.after2s = foldAngle(sim.world().sheet, length);
+    runUntil(release + 5.0);
+    r.after5s = foldAngle(sim.world().sheet, length);
+    runUntil(release + 20.0);
+    r.after20s = foldAngle(sim.world().sheet, length);
+    return r;
+}
+
+} // namespace
+
+class TestCreases : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void aPressedFoldStaysFolded() {
+        const FoldRun paper = runFold(true);
+        const FoldRun elastic = runFold(false);
+        qInfo("fold angle when let go / 2 / 5 / 20 s later: %.1f / %.1f / %.1f / %.1f degrees "
+              "with breaks and hinges, %.1f / %.1f / %.1f / %.1f without",
+              paper.whenLetGo, paper.after2s, paper.after5s, paper.after20s, elastic.whenLetGo,
+              elastic.after2s, elastic.after5s, elastic.after20s);
+        // Both were folded flat when let go.
+        QVERIFY(paper.whenLetGo > 150.0);
+        QVERIFY(elastic.whenLetGo > 150.0);
+        // The creased sheet stays folded...
+        QVERIFY(paper.after2s > 90.0);
+        QVERIFY(paper.after5s > 90.0);
+        QVERIFY(paper.after20s > 90.0);
+        // ... and the one that cannot crease springs open, all the way to flat.
+        QVERIFY(elastic.after5s < 45.0);
+        QVERIFY(elastic.after20s < 10.0);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestCreases)
+#include "test_creases.moc"
