@@ -70,6 +70,14 @@ Index splitTriangle(Sheet& sheet, Index t, Index i, Index j, Index n, Index ein,
     return t2;
 }
 
+// What i and j each give the new vertex: a sixth of the rest mass of the two triangles.
+double massShare(const Sheet& sheet, Index spring) {
+    const auto& faces = sheet.springs.faces[spring];
+    return sheet.density *
+           (materialArea(sheet, sheet.tris[faces[0]]) + materialArea(sheet, sheet.tris[faces[1]])) /
+           6.0;
+}
+
 } // namespace
 
 Index breakEdge(Sheet& sheet, Index spring, const std::vector<Vec3>& normals, double psi,
@@ -102,9 +110,7 @@ Index breakEdge(Sheet& sheet, Index spring, const std::vector<Vec3>& normals, do
     // Lumped masses follow rest areas: i and j each give up a sixth of the two old
     // triangles' mass, n receives both. Store exactly what was taken so recovery
     // gives it back bit for bit (m - (m - δ) is exact by Sterbenz' lemma).
-    const double delta = sheet.density *
-                         (materialArea(sheet, ev.oldTris[0]) + materialArea(sheet, ev.oldTris[1])) /
-                         6.0;
+    const double delta = massShare(sheet, spring);
     const double mi = V.m[i], mj = V.m[j];
     V.m[i] = mi - delta;
     V.m[j] = mj - delta;
@@ -222,8 +228,13 @@ bool recoverEvent(Sheet& sheet, Index event) {
 
 bool canBreak(const Sheet& sheet, Index spring) {
     const auto& S = sheet.springs;
-    return S.kind[spring] == SpringKind::Structural && S.breakable[spring] &&
-           S.faces[spring][0] != kNone && S.faces[spring][1] != kNone;
+    if (!(S.kind[spring] == SpringKind::Structural && S.breakable[spring] &&
+          S.faces[spring][0] != kNone && S.faces[spring][1] != kNone))
+        return false;
+    // A sheet from a file may hold masses that do not follow its rest areas; a break
+    // that would leave i or j without mass is not made.
+    const double share = massShare(sheet, spring);
+    return sheet.verts.m[S.a[spring]] > share && sheet.verts.m[S.b[spring]] > share;
 }
 
 namespace {
