@@ -3,6 +3,7 @@
 #include "EditorMain.h"
 #include "ExportCommand.h"
 #include "FidelityCommand.h"
+#include "FiguresCommand.h"
 #include "RenderCommand.h"
 #include "ReplayCommand.h"
 #include "SimulateCommand.h"
@@ -31,6 +32,7 @@ void printUsage(QTextStream& out) {
            "  replay     do a session recorded in the editor again, bit for bit; render it\n"
            "  stability  map where each integrator fails (CSV and heat maps)\n"
            "  fidelity   check the sheet against physics (stretch, free fall, cantilever...)\n"
+           "  figures    the paper's Fig. 10-12 as contact sheets with the counts (PNG, CSV)\n"
            "  bench      speed against accuracy of every integrator configuration (CSV, chart)\n"
            "\n"
            "paperfold <command> --help lists a command's options. The editor needs a\n"
@@ -58,8 +60,8 @@ int main(int argc, char* argv[]) {
     // Rendering draws legends with fonts, which need a GUI application; the
     // offscreen platform gives one with no display at all.
     const std::string_view command = argc >= 2 ? argv[1] : "";
-    const bool gui =
-        command == "render" || command == "replay" || command == "stability" || command == "bench";
+    const bool gui = command == "render" || command == "replay" || command == "stability" ||
+                     command == "bench" || command == "figures";
     if (gui && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     if (gui && qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
@@ -89,6 +91,7 @@ int main(int argc, char* argv[]) {
         if (args[1] == QLatin1String("stability")) return pf::cli::runStability(args);
         if (args[1] == QLatin1String("bench")) return pf::cli::runBench(args);
         if (args[1] == QLatin1String("fidelity")) return pf::cli::runFidelity(args);
+        if (args[1] == QLatin1String("figures")) return pf::cli::runFigures(args);
         throw pf::cli::UsageError{QStringLiteral("unknown command '%1'").arg(args[1])};
     } catch (const pf::cli::UsageError& e) {
         err << "paperfold: " << e.message << '\n';

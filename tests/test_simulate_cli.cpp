@@ -5,6 +5,7 @@
 #include "SheetStats.h"
 
 #include <QDir>
+#include <QFile>
 #include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -43,6 +44,38 @@ class TestSimulateCli : public QObject {
     Q_OBJECT
 
   private slots:
+    // The paper's figures as contact sheets: one row per value, one column per seed, the
+    // counts under each picture and in the CSV; φ = 1 cannot break a flat region.
+    void figuresWritesTheContactSheetsAndTheirCounts() {
+        QTemporaryDir dir;
+        const Result r =
+            runPaperfold({"figures", "--output-dir", dir.path(), "--seeds", "2", "--steps", "120"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QStringList sheets{"fig10_phi", "fig11_psi_press", "fig11_psi_compress",
+                                 "fig12_sigma"};
+        const int rows[] = {4, 4, 4, 3};
+        for (int k = 0; k < sheets.size(); ++k) {
+            const QImage image(dir.filePath(sheets[k] + QStringLiteral(".png")));
+            QVERIFY2(!image.isNull(), qPrintable(sheets[k]));
+            QCOMPARE(image.width(), 90 + 2 * 320);
+            QCOMPARE(image.height(), 34 + rows[k] * (200 + 38));
+        }
+        QFile csv(dir.filePath(QStringLiteral("figures.csv")));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QStringList lines =
+            QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 1 + 2 * (4 + 4 + 4 + 3));
+        long breaksAtPhi0 = 0;
+        for (const QString& line : lines.mid(1)) {
+            const QStringList f = line.split(QLatin1Char(','));
+            QCOMPARE(f.size(), 8);
+            if (f[0] != QLatin1String("fig10_phi")) continue;
+            if (f[3] == QLatin1String("1")) QCOMPARE(f[5], QStringLiteral("0"));
+            if (f[3] == QLatin1String("0")) breaksAtPhi0 += f[5].toLong();
+        }
+        QVERIFY(breaksAtPhi0 > 0);
+    }
+
     void statsJsonHasEveryKey() {
         const Result r = runPaperfold({"simulate", "--scene", "press", "--steps", "300", "--seed",
                                        "3", "--phi", "0.1", "--psi", "0.25", "--stats"});
