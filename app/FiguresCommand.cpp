@@ -73,7 +73,8 @@ QString symbol(Varied v) {
 
 // What a run left: the counts Fig. 10 and 11 are about.
 struct Counts {
-    Index breaks = 0, inserted = 0, splitHalves = 0; // breaks of an edge a break made
+    Index breaks = 0, inserted = 0;
+    Index splitHalves = 0; // breaks of an edge that an earlier break made
 };
 
 Counts countDamage(const Sheet& s, Index startVertices, Index startSprings) {
@@ -158,9 +159,6 @@ int runFigures(const QStringList& arguments) {
         err << "paperfold: " << error << '\n';
         return 2;
     }
-    auto simulate = [steps](const Figure& f, int seed, double value) {
-        return simulateFigure(f, seed, value, steps);
-    };
     QString csv;
     QTextStream table(&csv);
     table << "figure,scene,parameter,value,seed,breaks,inserted_vertices,split_halves\n";
@@ -179,7 +177,8 @@ int runFigures(const QStringList& arguments) {
         // Fig. 12 varies only the look: each seed is simulated once and drawn at each σ.
         std::vector<Run> sigmaRuns;
         if (f.varied == Varied::Sigma)
-            for (int seed = 1; seed <= seeds; ++seed) sigmaRuns.push_back(simulate(f, seed, 0.0));
+            for (int seed = 1; seed <= seeds; ++seed)
+                sigmaRuns.push_back(simulateFigure(f, seed, 0.0, steps));
         for (int row = 0; row < rows; ++row) {
             const double value = f.values[row];
             const int top = kTitle + row * (kCellHeight + kCaption);
@@ -187,8 +186,8 @@ int runFigures(const QStringList& arguments) {
                              QStringLiteral("%1 = %2").arg(symbol(f.varied)).arg(value));
             long totalBreaks = 0, totalInserted = 0;
             for (int seed = 1; seed <= seeds; ++seed) {
-                const Run run =
-                    f.varied == Varied::Sigma ? sigmaRuns[seed - 1] : simulate(f, seed, value);
+                const Run run = f.varied == Varied::Sigma ? sigmaRuns[seed - 1]
+                                                          : simulateFigure(f, seed, value, steps);
                 if (!run.ok) {
                     err << "paperfold: the simulation diverged (" << f.file << ", "
                         << symbol(f.varied) << " = " << value << ", seed " << seed << ")\n";

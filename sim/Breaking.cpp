@@ -226,15 +226,27 @@ bool recoverEvent(Sheet& sheet, Index event) {
     return true;
 }
 
-bool canBreak(const Sheet& sheet, Index spring) {
+namespace {
+
+// A breakable structural edge between two triangles: the mesh has room to split it.
+bool splittable(const Sheet& sheet, Index spring) {
     const auto& S = sheet.springs;
-    if (!(S.kind[spring] == SpringKind::Structural && S.breakable[spring] &&
-          S.faces[spring][0] != kNone && S.faces[spring][1] != kNone))
-        return false;
-    // A sheet from a file may hold masses that do not follow its rest areas; a break
-    // that would leave i or j without mass is not made.
+    return S.kind[spring] == SpringKind::Structural && S.breakable[spring] &&
+           S.faces[spring][0] != kNone && S.faces[spring][1] != kNone;
+}
+
+// A sheet from a file may hold masses that do not follow its rest areas; a break that
+// would leave i or j without mass is not made.
+bool leavesMass(const Sheet& sheet, Index spring) {
+    const auto& S = sheet.springs;
     const double share = massShare(sheet, spring);
     return sheet.verts.m[S.a[spring]] > share && sheet.verts.m[S.b[spring]] > share;
+}
+
+} // namespace
+
+bool canBreak(const Sheet& sheet, Index spring) {
+    return splittable(sheet, spring) && leavesMass(sheet, spring);
 }
 
 namespace {
@@ -242,12 +254,14 @@ namespace {
 // A breakable compressed edge between two triangles, not held at both ends and long
 // enough to split: one that Eq. 10 applies to.
 bool breakCandidate(const Sheet& sheet, Index spring, double spacing) {
-    if (!canBreak(sheet, spring)) return false;
+    if (!splittable(sheet, spring)) return false;
     const auto& S = sheet.springs;
     const auto& V = sheet.verts;
     const Index i = S.a[spring], j = S.b[spring];
     if (V.pinned[i] && V.pinned[j]) return false;
-    return (V.x[i] - V.x[j]).norm() < S.rest[spring] && keepsCreaseSpacing(sheet, spring, spacing);
+    // The cheap test first: most edges of a sheet are not compressed at all.
+    if (!((V.x[i] - V.x[j]).norm() < S.rest[spring])) return false;
+    return leavesMass(sheet, spring) && keepsCreaseSpacing(sheet, spring, spacing);
 }
 
 double candidateProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
