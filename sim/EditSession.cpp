@@ -76,6 +76,9 @@ void EditSession::apply(const EditCommand& c) {
     case EditCommand::Kind::Reset:
         if (c.world) reset(*c.world);
         break;
+    case EditCommand::Kind::Fold:
+        if (c.fold) fold(*c.fold);
+        break;
     }
 }
 
@@ -112,7 +115,8 @@ std::string replay(const EditLog& log, EditSession& session,
 
 void EditSession::replaceWorld(const World& world) {
     setSettle(Settle::None);
-    settled_.reset(); // an undo step of the old sheet's
+    finished_.reset();    // an undo step of the old sheet's
+    foldGroup_ = kNoFold; // a fold of the old sheet's
     const SphereTool tool = sim_.world().sphere;
     sim_ = Simulation(world);
     sim_.world().script.sphereKeys.clear();
@@ -142,13 +146,18 @@ void EditSession::setParams(const SimParams& given) {
 
 std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, double radius,
                                                            bool visible, bool pressed) {
-    record({EditCommand::Kind::Tool, 0, target, radius, visible, pressed, -1, nullptr, nullptr});
+    EditCommand c = EditCommand::of(EditCommand::Kind::Tool);
+    c.target = target;
+    c.radius = radius;
+    c.visible = visible;
+    c.pressed = pressed;
+    record(std::move(c));
     SphereTool& sphere = sim_.world().sphere;
     toolTarget_ = target;
     sphere.radius = radius;
     if (visible && !sphere.active) sphere.center = target; // appears where the cursor is
     sphere.active = visible;
-    if (grabbing()) pressed = false; // one stroke at a time
+    if (grabbing() || folding()) pressed = false; // one stroke at a time
     if (pressed && !pressed_) beginStroke();
     const bool released = pressed_ && !pressed;
     pressed_ = pressed;
@@ -156,13 +165,17 @@ std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, d
 }
 
 std::optional<EditSession::StrokeEnd> EditSession::grab(const Vec3& target, bool held, bool begin) {
-    record({EditCommand::Kind::Grab, 0, target, 0.0, begin, held, -1, nullptr, nullptr});
+    EditCommand c = EditCommand::of(EditCommand::Kind::Grab);
+    c.target = target;
+    c.visible = begin;
+    c.pressed = held;
+    record(std::move(c));
     const World& w = sim_.world();
     grabTarget_ = target;
     if (w.groundEnabled) grabTarget_.y() = std::max(grabTarget_.y(), w.groundHeight);
     // Only an explicit begin picks up: after an undo let go, moves of the hand that
     // still holds nothing must not pick up whatever is nearest.
-    if (begin && held && !grabbing() && !pressed_) {
+    if (begin && held && !busy()) {
         const auto& V = w.sheet.verts;
         double nearest = std::numeric_limits<double>::infinity();
         for (Index i = 0; i < V.size(); ++i) {
@@ -216,8 +229,11 @@ void EditSession::setPins(const std::vector<Index>& vertices, bool pinned) {
 }
 
 std::optional<EditSession::StrokeEnd> EditSession::pin(const Vec3& point, double radius) {
-    record({EditCommand::Kind::Pin, 0, point, radius, false, false, -1, nullptr, nullptr});
-    if (pressed_ || grabbing()) return std::nullopt;
+    EditCommand c = EditCommand::of(EditCommand::Kind::Pin);
+    c.target = point;
+    c.radius = radius;
+    record(std::move(c));
+    if (busy()) return std::nullopt;
     const auto& V = sim_.world().sheet.verts;
     Index nearest = kNone;
     double best = radius * radius;
@@ -322,9 +338,9 @@ std::optional<EditSession::StrokeEnd> EditSession::reset(const World& world) {
     c.kind = EditCommand::Kind::Reset;
     c.world = std::make_shared<const World>(world);
     record(c);
-    if (pressed_) return std::nullopt; // the stroke would go on across two sheets
-    settled_.reset();                  // a settle of the sheet going away is no step of the new one
-    releaseGrab();                     // before the copy: the hand's pin is not the sheet's
+    if (pressed_ || folding()) return std::nullopt; // it would go on across two sheets
+    finished_.reset(); // a settle of the sheet going away is no step of the new one
+    releaseGrab();     // before the copy: the hand's pin is not the sheet's
     Stroke st;
     st.worldBefore = std::make_shared<const World>(sim_.world());
     st.worldAfter = c.world;
@@ -352,8 +368,10 @@ void EditSession::swapSheet(const World& world, int sheet) {
 }
 
 std::optional<int> EditSession::undoStroke(int stroke) {
-    record({EditCommand::Kind::Undo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr, nullptr});
-    if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
+    EditCommand c = EditCommand::of(EditCommand::Kind::Undo);
+    c.stroke = stroke;
+    record(std::move(c));
+    if (stroke < 0 || stroke >= static_cast<int>(strokes_.size()) || folding()) return std::nullopt;
     const Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
     if (st.worldAfter) { // a Reset
         if (sheet_ != st.sheetAfter || pressed_) return std::nullopt;
@@ -381,8 +399,10 @@ std::optional<int> EditSession::undoStroke(int stroke) {
 }
 
 std::optional<int> EditSession::redoStroke(int stroke) {
-    record({EditCommand::Kind::Redo, 0, Vec3::Zero(), 0.0, false, false, stroke, nullptr, nullptr});
-    if (stroke < 0 || stroke >= static_cast<int>(strokes_.size())) return std::nullopt;
+    EditCommand c = EditCommand::of(EditCommand::Kind::Redo);
+    c.stroke = stroke;
+    record(std::move(c));
+    if (stroke < 0 || stroke >= static_cast<int>(strokes_.size()) || folding()) return std::nullopt;
     if (Stroke& reset = strokes_[static_cast<std::size_t>(stroke)]; reset.worldAfter) {
         if (sheet_ != reset.sheetBefore || pressed_) return std::nullopt;
         // The sheet moved on since the undo: an undo of this redo gives back that.
@@ -442,10 +462,10 @@ StepStatus EditSession::advance(int steps) {
         }
         const StepStatus status = settle_ == Settle::Settling ? settleStep() : sim_.step();
         if (status != StepStatus::Ok) {
-            record({EditCommand::Kind::Diverged, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr,
-                    nullptr});
+            record(EditCommand::of(EditCommand::Kind::Diverged));
             return status;
         }
+        if (folding() && w.time >= foldRelease_) finishFold();
     }
     return StepStatus::Ok;
 }
@@ -453,16 +473,15 @@ StepStatus EditSession::advance(int steps) {
 bool EditSession::placeToolAtTarget() {
     SphereTool& sphere = sim_.world().sphere;
     if ((sphere.center - toolTarget_).squaredNorm() == 0.0) return false;
-    record(
-        {EditCommand::Kind::PlaceTool, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr, nullptr});
+    record(EditCommand::of(EditCommand::Kind::PlaceTool));
     sphere.center = toolTarget_;
     return true;
 }
 
 void EditSession::settle() {
-    record({EditCommand::Kind::Settle, 0, Vec3::Zero(), 0.0, false, false, -1, nullptr, nullptr});
+    record(EditCommand::of(EditCommand::Kind::Settle));
     // Not under a held tool: the stroke would go on through paper that cannot break.
-    if (settle_ != Settle::None || pressed_ || grabbing()) return;
+    if (settle_ != Settle::None || busy()) return;
     setSettle(Settle::Settling);
     settleStart_ = sim_.world().stepCount;
     settleLook_ = look();
@@ -489,7 +508,7 @@ StepStatus EditSession::settleStep() {
         freeze();
         stroke.after = look();
         stroke.settle = true;
-        settled_ = keepStroke(std::move(stroke), StrokeKind::Settle);
+        finished_ = keepStroke(std::move(stroke), StrokeKind::Settle);
     }
     return status;
 }
@@ -500,8 +519,33 @@ void EditSession::freeze() {
     setSettle(Settle::Frozen);
 }
 
-std::optional<EditSession::StrokeEnd> EditSession::takeSettled() {
-    return std::exchange(settled_, std::nullopt);
+std::optional<EditSession::StrokeEnd> EditSession::takeFinished() {
+    return std::exchange(finished_, std::nullopt);
+}
+
+FoldRefusal EditSession::fold(const FoldRequest& request) {
+    EditCommand c = EditCommand::of(EditCommand::Kind::Fold);
+    c.fold = std::make_shared<const FoldRequest>(request);
+    record(std::move(c));
+    if (busy()) return FoldRefusal::Busy;
+    FoldPlan plan = planFold(sim_.world(), request);
+    if (plan.refusal != FoldRefusal::None) return plan.refusal;
+    beginStroke();
+    setPins(plan.motions.front().vertices, true);
+    foldRelease_ = plan.release;
+    auto& groups = sim_.world().script.pins;
+    foldGroup_ = groups.size();
+    for (PinGroup& g : plan.motions) groups.push_back(std::move(g));
+    return FoldRefusal::None;
+}
+
+void EditSession::finishFold() {
+    // applyScript has let the flap go; the group has nothing more to do.
+    auto& groups = sim_.world().script.pins;
+    if (foldGroup_ < groups.size())
+        groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(foldGroup_), groups.end());
+    foldGroup_ = kNoFold;
+    finished_ = endStroke(StrokeKind::Fold);
 }
 
 } // namespace pf

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "FoldPlan.h"
 #include "Simulation.h"
 
 #include <functional>
@@ -24,7 +25,8 @@ struct EditCommand {
         Settle = 7,
         Grab = 8,
         Pin = 9,
-        Reset = 10
+        Reset = 10,
+        Fold = 11
     };
     Kind kind = Kind::Tool;
     std::int64_t step = 0;
@@ -35,6 +37,14 @@ struct EditCommand {
     int stroke = -1;                         // Undo, Redo
     std::shared_ptr<const SimParams> params; // Params (shared: most commands are tool moves)
     std::shared_ptr<const World> world;      // Reset: the sheet it starts again from
+    std::shared_ptr<const FoldRequest> fold; // Fold (shared, as params are)
+
+    // A command of `kind` with nothing else set; the step is stamped when recorded.
+    static EditCommand of(Kind kind) {
+        EditCommand c;
+        c.kind = kind;
+        return c;
+    }
 };
 
 // Everything needed to do a session again: the world it started from, the tool's target
@@ -72,7 +82,7 @@ class EditSession {
     void setParams(const SimParams& params);
 
     // What an undo step is, for its name in the history.
-    enum class StrokeKind : std::uint8_t { Push, Grab, Pin, Unpin, Settle, Reset };
+    enum class StrokeKind : std::uint8_t { Push, Grab, Pin, Unpin, Settle, Reset, Fold };
     struct StrokeEnd {
         int stroke = 0; // its index, for undoStroke / redoStroke
         int events = 0; // breaks and hinges it made; for a pin, the vertices it (un)pinned
@@ -112,6 +122,15 @@ class EditSession {
     // tool is pressed.
     std::optional<StrokeEnd> reset(const World& world);
 
+    // Fold (FoldPlan.h): the flap is pinned and carried round the line, held, and let go;
+    // the step that lets it go ends the fold as an undo step (takeFinished). Refused, with
+    // the reason, on a request planFold refuses; refused (Busy) while the push tool is
+    // pressed, a grab is held or another fold is under way. While a fold is under way
+    // the other edits wait: pressing the tool, grabbing, pinning, undo, redo, Reset and
+    // Settle do nothing.
+    FoldRefusal fold(const FoldRequest& request);
+    bool folding() const { return foldGroup_ != kNoFold; }
+
     // Undo recovers (§4.2), newest first, every break and hinge since the stroke began —
     // its own and those the sheet made settling after it — and, when all came back, gives
     // back the sheet as it was when the stroke began: positions, velocities, plastic folds.
@@ -132,13 +151,14 @@ class EditSession {
     // until it comes to rest (every vertex slower than kRestSpeed) or kSettleSeconds have
     // passed; then it stands frozen — the clock runs, nothing moves — until the next
     // edit (a press of the tool, undo, redo, new parameters, a new sheet). Once frozen
-    // it is an undo step like a stroke (takeSettled): undo gives back the sheet as it was
+    // it is an undo step like a stroke (takeFinished): undo gives back the sheet as it was
     // when Settle was chosen, redo the settled sheet, frozen again.
     void settle();
     static constexpr double kRestSpeed = 1e-3;    // m/s
     static constexpr double kSettleSeconds = 3.0; // s
-    // The undo step of a settle that froze the sheet since the last call, once.
-    std::optional<StrokeEnd> takeSettled();
+    // The undo step of a settle that froze the sheet, or of a fold that was let go, since
+    // the last call, once.
+    std::optional<StrokeEnd> takeFinished();
     bool settling() const { return settle_ == Settle::Settling; }
     bool frozen() const { return settle_ == Settle::Frozen; }
 
@@ -227,7 +247,16 @@ class EditSession {
     bool pressedFrozen_ = false; // the sheet was settled when the current stroke began
     std::int64_t settleStart_ = 0;
     SheetLook settleLook_; // the sheet when Settle was chosen
-    std::optional<StrokeEnd> settled_;
+    std::optional<StrokeEnd> finished_;
+    // The fold under way: its first pin group in the world's script (the rest follow it
+    // to the end), and when it is let go.
+    static constexpr std::size_t kNoFold = static_cast<std::size_t>(-1);
+    std::size_t foldGroup_ = kNoFold;
+    double foldRelease_ = 0.0;
+    // Ends the fold under way once its flap is let go: an undo step.
+    void finishFold();
+    // Another edit must wait: a push or a grab is held, or a fold is under way.
+    bool busy() const { return pressed_ || grabbing() || folding(); }
     EditLog log_; // endStep is filled in by log()
 };
 

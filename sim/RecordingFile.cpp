@@ -16,11 +16,13 @@ namespace pf {
 
 namespace {
 
-// One command: step i64, kind u8, flags u8 (1 visible, 2 pressed), 2 zero bytes, argument
-// i32 (the stroke of an undo or redo, the params entry of a change, the worlds entry of
-// a reset), target 3 × f64,
-// radius f64; little-endian.
+// One command: step i64, kind u8, flags u8 (1 visible, 2 pressed, 4 a mountain fold), 2
+// zero bytes, argument i32 (the stroke of an undo or redo, the params entry of a change,
+// the worlds entry of a reset, the folds entry of a fold), target 3 × f64, radius f64;
+// little-endian.
 constexpr qsizetype kCommandBytes = 48;
+// A fold's line end 3 × f64 and angle f64, in the "folds" bytes.
+constexpr qsizetype kFoldBytes = 32;
 
 template <typename T> void put(QByteArray& out, T v) {
     char b[sizeof(T)];
@@ -49,7 +51,7 @@ const CborBounds& recordingBounds() {
     static const CborBounds bounds = [] {
         CborBounds b;
         for (const char* key : {"magic", "version", "start", "toolTarget", "pressed", "endStep",
-                                "commands", "params", "worlds"})
+                                "commands", "params", "worlds", "folds"})
             b.knownKeys.insert(QLatin1String(key));
         b.maxDepth = 3;
         b.maxValues = kMaxRecordedParams + kMaxRecordedResets + 64;
@@ -77,6 +79,7 @@ QByteArray encodeRecording(const EditLog& log) {
     QByteArray commands;
     commands.reserve(static_cast<qsizetype>(log.commands.size()) * kCommandBytes);
     QCborArray params, worlds;
+    QByteArray folds;
     for (const EditCommand& c : log.commands) {
         std::int32_t argument = c.stroke;
         if (c.kind == EditCommand::Kind::Params) {
@@ -85,18 +88,25 @@ QByteArray encodeRecording(const EditLog& log) {
         } else if (c.kind == EditCommand::Kind::Reset) {
             argument = static_cast<std::int32_t>(worlds.size());
             worlds.append(encodeWorld(*c.world));
+        } else if (c.kind == EditCommand::Kind::Fold) {
+            argument = static_cast<std::int32_t>(folds.size() / kFoldBytes);
+            for (int k = 0; k < 3; ++k) putF64(folds, c.fold->to[k]);
+            putF64(folds, c.fold->angle);
         }
         put<std::int64_t>(commands, c.step);
         put<std::uint8_t>(commands, static_cast<std::uint8_t>(c.kind));
-        put<std::uint8_t>(commands, (c.visible ? 1 : 0) | (c.pressed ? 2 : 0));
+        const bool mountain = c.fold && c.fold->mountain;
+        put<std::uint8_t>(commands, (c.visible ? 1 : 0) | (c.pressed ? 2 : 0) | (mountain ? 4 : 0));
         put<std::uint16_t>(commands, 0);
         put<std::int32_t>(commands, argument);
-        for (int k = 0; k < 3; ++k) putF64(commands, c.target[k]);
+        const Vec3 target = c.fold ? c.fold->from : c.target;
+        for (int k = 0; k < 3; ++k) putF64(commands, target[k]);
         putF64(commands, c.radius);
     }
     root[QLatin1String("commands")] = commands;
     root[QLatin1String("params")] = params;
     if (!worlds.isEmpty()) root[QLatin1String("worlds")] = worlds;
+    if (!folds.isEmpty()) root[QLatin1String("folds")] = folds;
     return root.toCborValue().toCbor();
 }
 
@@ -164,6 +174,11 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
             worlds.push_back(std::make_shared<const World>(std::move(*decoded.world)));
         }
     }
+    // Optional too: recordings made before the Fold tool have none.
+    const QCborValue foldsValue = root.value(QLatin1String("folds"));
+    const QByteArray folds = foldsValue.toByteArray();
+    if (!foldsValue.isUndefined() && (!foldsValue.isByteArray() || folds.size() % kFoldBytes != 0))
+        return bad(QStringLiteral("recording.folds: not whole folds of %1 bytes").arg(kFoldBytes));
     const QByteArray commands = root.value(QLatin1String("commands")).toByteArray();
     if (commands.size() % kCommandBytes != 0 ||
         commands.size() / kCommandBytes > kMaxRecordedCommands)
@@ -181,10 +196,11 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
         lastStep = c.step;
         const auto kind = take<std::uint8_t>(p + 8);
         const auto flags = take<std::uint8_t>(p + 9);
-        if (kind < 1 || kind > 10) return bad(where + QStringLiteral(": unknown command"));
-        if (flags > 3 || take<std::uint16_t>(p + 10) != 0)
-            return bad(where + QStringLiteral(": unknown flags"));
+        if (kind < 1 || kind > 11) return bad(where + QStringLiteral(": unknown command"));
         c.kind = static_cast<EditCommand::Kind>(kind);
+        const int knownFlags = c.kind == EditCommand::Kind::Fold ? 7 : 3;
+        if ((flags & ~knownFlags) != 0 || take<std::uint16_t>(p + 10) != 0)
+            return bad(where + QStringLiteral(": unknown flags"));
         c.visible = flags & 1;
         c.pressed = flags & 2;
         const std::int32_t argument = take<std::int32_t>(p + 12);
@@ -201,6 +217,20 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
             if (argument < 0 || argument >= static_cast<std::int32_t>(worlds.size()))
                 return bad(where + QStringLiteral(": no such sheet to reset to"));
             c.world = worlds[static_cast<std::size_t>(argument)];
+        } else if (c.kind == EditCommand::Kind::Fold) {
+            if (argument < 0 || argument >= folds.size() / kFoldBytes)
+                return bad(where + QStringLiteral(": no such fold"));
+            const char* f = folds.constData() + qsizetype(argument) * kFoldBytes;
+            FoldRequest fold;
+            fold.from = c.target;
+            for (int k = 0; k < 3; ++k) fold.to[k] = takeF64(f + 8 * k);
+            fold.angle = takeF64(f + 24);
+            fold.mountain = flags & 4;
+            // The session refuses an angle out of range, as the editor does; only what
+            // could not be computed with is refused here.
+            if (!finiteWithin(fold.to.norm(), kDivergenceRadius) || !finiteWithin(fold.angle, 10.0))
+                return bad(where + QStringLiteral(": fold line or angle out of range"));
+            c.fold = std::make_shared<const FoldRequest>(fold);
         } else {
             // An undo of a stroke that does not exist does nothing, as in the editor.
             c.stroke = argument;

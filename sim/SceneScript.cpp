@@ -28,6 +28,7 @@ void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, Sp
             for (Index i : g.vertices) V.pinned[i] = 0;
             continue;
         }
+        if (t < g.start) continue;
         const bool moving = t < g.until;
         // The exact chord of the turn over the step, so that positions stay on their
         // circles (integrated as x += h v) instead of spiralling outward.

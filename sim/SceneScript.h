@@ -14,8 +14,10 @@ struct SphereKey {
     Vec3 center = Vec3::Zero();
 };
 
-// Pinned vertices that move until a time, then stand still: at a constant velocity,
-// turning at a constant rate about an axis, or both; optionally let go at a time.
+// Pinned vertices that move from a time until a time, then stand still: at a constant
+// velocity, turning at a constant rate about an axis, or both; optionally let go at a
+// time. Before its start a group leaves its vertices to whatever moves them (another
+// group of the same vertices, say: one motion after another).
 struct PinGroup {
     std::vector<Index> vertices;
     Vec3 velocity = Vec3::Zero();
@@ -24,6 +26,7 @@ struct PinGroup {
     Vec3 pivot = Vec3::Zero();
     Vec3 axis = Vec3::UnitX();
     double turnRate = 0.0;
+    double start = -std::numeric_limits<double>::infinity();
     double until = 0.0;
     // The step that reaches this time unpins the group's vertices; infinity: never.
     double release = std::numeric_limits<double>::infinity();

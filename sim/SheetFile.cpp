@@ -560,6 +560,8 @@ World worldFromCbor(const QCborMap& root) {
         }
         if (gm.contains(QLatin1String("release")))
             group.release = realAt(gm, "release", wsc, -1e12, 1e12);
+        if (gm.contains(QLatin1String("start")))
+            group.start = realAt(gm, "start", wsc, -1e12, 1e12);
         world.script.pins.push_back(std::move(group));
     }
     return world;
@@ -626,6 +628,7 @@ const CborBounds& sheetFileBounds() {
                                 "pivot",
                                 "axis",
                                 "release",
+                                "start",
                                 "sheet",
                                 "density",
                                 "vertexCount",
@@ -720,6 +723,7 @@ QByteArray encodeWorld(const World& world) {
             gm[QLatin1String("axis")] = axis;
         }
         if (std::isfinite(g.release)) gm[QLatin1String("release")] = g.release;
+        if (std::isfinite(g.start)) gm[QLatin1String("start")] = g.start;
         pins.append(gm);
     }
     script[QLatin1String("pins")] = pins;

@@ -1,5 +1,6 @@
 // Creases that stay (docs/model.md, Creases): paper keeps a fold once it has been
 // pressed into it; the model's breaks and hinges are what carry that memory.
+#include "FoldAngle.h"
 #include "Scenes.h"
 #include "SheetStats.h"
 #include "Simulation.h"
@@ -10,30 +11,6 @@
 using namespace pf;
 
 namespace {
-
-// The angle the sheet is folded by about the line across its middle, in degrees: 0 flat,
-// 180 folded flat onto itself. Measured between the centres of the strips a quarter of
-// the length to either side of the fold, seen from the fold line's centre.
-double foldAngle(const Sheet& s, double length) {
-    const double band = 0.02;
-    Vec3 sum[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    int count[3] = {0, 0, 0};
-    for (Index i = 0; i < s.verts.size(); ++i) {
-        const double along = s.verts.X[i].y();
-        for (int k = 0; k < 3; ++k) {
-            const double centre = (k - 1) * 0.25 * length;
-            if (std::abs(along - centre) <= band) {
-                sum[k] += s.verts.x[i];
-                ++count[k];
-            }
-        }
-    }
-    const Vec3 fold = sum[1] / count[1];
-    const Vec3 nearSide = sum[0] / count[0] - fold, farSide = sum[2] / count[2] - fold;
-    const double opening =
-        std::acos(std::clamp(nearSide.normalized().dot(farSide.normalized()), -1.0, 1.0));
-    return 180.0 - opening * 180.0 / std::numbers::pi;
-}
 
 struct FoldRun {
     double whenLetGo = 0.0, after2s = 0.0, after5s = 0.0, after20s = 0.0;

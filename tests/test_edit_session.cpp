@@ -348,14 +348,14 @@ class TestEditSession : public QObject {
         int steps = 0;
         for (; !settled && steps < 2000; ++steps) {
             QCOMPARE(session.advance(1), StepStatus::Ok);
-            settled = session.takeSettled();
+            settled = session.takeFinished();
         }
         QVERIFY(settled);
         qInfo("settled after %d steps (%.2f s)", steps, steps * session.world().params.dt);
         QVERIFY(steps <= std::lround(EditSession::kSettleSeconds / session.world().params.dt));
         QVERIFY(session.frozen());
         QCOMPARE(session.world().sheet.events.size(), events); // no break, no hinge
-        QVERIFY(!session.takeSettled());                       // reported once
+        QVERIFY(!session.takeFinished());                      // reported once
 
         // Frozen: a minute of steps moves nothing; the clock runs.
         const std::vector<Vec3> kept = session.world().sheet.verts.x;
@@ -400,7 +400,7 @@ class TestEditSession : public QObject {
         session.settle();
         QVERIFY(!session.settling());
         session.advance(800);
-        QVERIFY(!session.takeSettled());
+        QVERIFY(!session.takeFinished());
     }
 
     void aSessionWithASettleReplays() {
@@ -791,7 +791,9 @@ class TestEditSession : public QObject {
         QTest::newRow("empty") << QByteArray() << "";
         QTest::newRow("a sheet, not a recording") << encodeWorld(log.start) << "wrong magic";
         QTest::newRow("truncated") << good.left(good.size() / 2) << "";
-        QTest::newRow("unknown command") << withCommandByte(log, 8, 11) << "unknown command";
+        QTest::newRow("unknown command") << withCommandByte(log, 8, 12) << "unknown command";
+        QTest::newRow("a fold without its line")
+            << withCommandByte(log, 8, 11) << "no such fold";
         QTest::newRow("a reset without its sheet")
             << withCommandByte(log, 8, 10) << "no such sheet to reset to";
         QTest::newRow("unknown flags") << withCommandByte(log, 9, 4) << "unknown flags";

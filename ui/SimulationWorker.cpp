@@ -99,7 +99,12 @@ void SimulationWorker::settle() {
 
 void SimulationWorker::advance(int steps) {
     const StepStatus status = session_.advance(steps);
-    if (const auto settled = session_.takeSettled()) emit this->settled(settled->stroke);
+    if (const auto finished = session_.takeFinished()) {
+        if (finished->kind == EditSession::StrokeKind::Settle)
+            emit settled(finished->stroke);
+        else
+            announce(finished); // a fold that was let go
+    }
     if (status == StepStatus::Ok) return;
     playing_ = false;
     emit diverged(session_.world().stepCount);

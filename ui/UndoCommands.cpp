@@ -32,6 +32,10 @@ StrokeCommand::StrokeCommand(SimulationThread* sim, int stroke, int events, int 
     case EditSession::StrokeKind::Reset:
         setText(QCoreApplication::translate("UndoCommands", "Reset"));
         break;
+    case EditSession::StrokeKind::Fold:
+        setText(QCoreApplication::translate("UndoCommands", "Fold (%n break(s) or fold(s))",
+                                            nullptr, events));
+        break;
     }
 }
 

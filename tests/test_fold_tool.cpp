@@ -1,0 +1,233 @@
+// The Fold tool (sim/FoldPlan.h, EditSession::fold): a fold drawn across the sheet is
+// carried round, pressed and let go, and the crease the model makes keeps it; it is an
+// undo step, replays bit for bit, and a sheet saved mid-fold finishes the fold.
+#include "EditSession.h"
+#include "FoldAngle.h"
+#include "RecordingFile.h"
+#include "Scenes.h"
+#include "SheetFile.h"
+#include "SheetStats.h"
+
+#include <QtTest>
+#include <numbers>
+
+using namespace pf;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// The editor's sheet (office A4 on the desk, the editor's settings), let settle 0.5 s.
+EditSession editorSession(bool damage = true) {
+    World w = makeEditorScene("press", SceneOptions{}, 0.03);
+    w.params.breaking = w.params.hinges = damage;
+    EditSession s(std::move(w));
+    [&] { QCOMPARE(s.advance(120), StepStatus::Ok); }();
+    return s;
+}
+
+// Across the middle of the sheet, from edge to edge and beyond (the line is a line).
+FoldRequest acrossTheMiddle(double angle = kPi, bool mountain = false) {
+    return {Vec3(-0.15, 0.0, 0.0), Vec3(0.15, 0.0, 0.0), angle, mountain};
+}
+
+void advanceSeconds(EditSession& s, double seconds) {
+    const double end = s.world().time + seconds;
+    while (s.world().time < end) QCOMPARE(s.advance(1), StepStatus::Ok);
+}
+
+// Steps until the fold is let go; returns the seconds it took.
+double runUntilLetGo(EditSession& s) {
+    const double start = s.world().time;
+    while (s.folding()) {
+        const StepStatus status = s.advance(1);
+        if (status != StepStatus::Ok) return -1.0;
+    }
+    return s.world().time - start;
+}
+
+double length() {
+    return SceneOptions{}.length;
+}
+
+} // namespace
+
+class TestFoldTool : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void aValleyFoldIsCarriedRoundAndStays() {
+        EditSession s = editorSession();
+        QCOMPARE(s.fold(acrossTheMiddle()), FoldRefusal::None);
+        QVERIFY(s.folding());
+        // Half way round the flap stands up: carried, not placed.
+        advanceSeconds(s, 0.75);
+        const double halfWay = foldAngle(s.world().sheet, length());
+        const double took = 0.75 + runUntilLetGo(s);
+        const double letGo = foldAngle(s.world().sheet, length());
+        const auto ended = s.takeFinished();
+        advanceSeconds(s, 5.0);
+        const double later = foldAngle(s.world().sheet, length());
+        qInfo("half way %.1f deg, let go after %.2f s at %.1f deg, 5 s later %.1f deg; %d breaks "
+              "and hinges in the fold",
+              halfWay, took, letGo, later, ended ? ended->events : -1);
+        QVERIFY(halfWay > 60.0 && halfWay < 120.0);
+        // A half turn at kFoldTurnRate, pressed kFoldPress.
+        QVERIFY(std::abs(took - (kPi / kFoldTurnRate + kFoldPress)) < 0.02);
+        QVERIFY(letGo > 170.0);
+        QVERIFY(later > 170.0);
+        QVERIFY(ended);
+        QCOMPARE(ended->kind, EditSession::StrokeKind::Fold);
+        QVERIFY(ended->events > 0);             // the crease is the model's breaks and hinges
+        QVERIFY(!s.takeFinished());             // reported once
+        QVERIFY(s.world().script.pins.empty()); // the carry is gone with the fold
+    }
+
+    void withoutBreaksAndHingesTheSheetSpringsBackFlat() {
+        // The same carry without the crease model: nothing keeps the fold.
+        EditSession s = editorSession(false);
+        QCOMPARE(s.fold(acrossTheMiddle()), FoldRefusal::None);
+        runUntilLetGo(s);
+        QVERIFY(foldAngle(s.world().sheet, length()) > 170.0);
+        advanceSeconds(s, 10.0);
+        const double later = foldAngle(s.world().sheet, length());
+        qInfo("without breaks and hinges: %.1f deg 10 s after it was let go", later);
+        QVERIFY(later < 30.0);
+    }
+
+    void aPartialFoldIsHeldAtItsAngle() {
+        // Pressed flat first (an unpressed crease springs open), then opened back to the
+        // angle and held there until it is let go.
+        EditSession s = editorSession();
+        QCOMPARE(s.fold(acrossTheMiddle(kPi / 2)), FoldRefusal::None);
+        const double release = s.world().script.pins.back().release;
+        advanceSeconds(s, 1.6); // round and pressed
+        QVERIFY(foldAngle(s.world().sheet, length()) > 170.0);
+        while (s.world().time < release - 0.1) QCOMPARE(s.advance(1), StepStatus::Ok);
+        const double held = foldAngle(s.world().sheet, length());
+        qInfo("90 degree fold held at %.1f deg (measured between the halves' quarter lines)", held);
+        QVERIFY(std::abs(held - 95.0) < 15.0);
+    }
+
+    void theFoldGoesTowardThePapersFrontOrBack() {
+        // In the air (no desk under it) a mountain fold carries the flap below the paper
+        // and a valley fold above it.
+        for (bool mountain : {false, true}) {
+            World w = makeEditorScene("press", SceneOptions{}, 0.03);
+            w.groundEnabled = false;
+            w.params.gravity = 0.0;
+            EditSession s(std::move(w));
+            QCOMPARE(s.fold(acrossTheMiddle(kPi, mountain)), FoldRefusal::None);
+            advanceSeconds(s, 0.75);
+            double lowest = 0.0, highest = 0.0;
+            for (const Vec3& x : s.world().sheet.verts.x) {
+                lowest = std::min(lowest, x.y());
+                highest = std::max(highest, x.y());
+            }
+            qInfo("%s: flap between %.3f and %.3f m", mountain ? "mountain" : "valley", lowest,
+                  highest);
+            if (mountain) {
+                QVERIFY(lowest < -0.1);
+                QVERIFY(highest < 0.01);
+            } else {
+                QVERIFY(highest > 0.1);
+                QVERIFY(lowest > -0.01);
+            }
+        }
+    }
+
+    void whatCannotBeFoldedIsRefusedWithItsReason() {
+        EditSession s = editorSession();
+        // The paper faces up on the desk: a mountain fold would carry the flap through it.
+        QCOMPARE(s.fold(acrossTheMiddle(kPi, true)), FoldRefusal::DeskInTheWay);
+        QCOMPARE(s.fold({Vec3(0, 0, 0), Vec3(0.005, 0, 0), kPi, false}), FoldRefusal::ShortLine);
+        QCOMPARE(s.fold({Vec3(-0.15, 0, 0.5), Vec3(0.15, 0, 0.5), kPi, false}),
+                 FoldRefusal::OffSheet);
+        // Along the edge: nothing lies beyond it.
+        QCOMPARE(s.fold({Vec3(-0.15, 0, 0.1485), Vec3(0.15, 0, 0.1485), kPi, false}),
+                 FoldRefusal::NothingToFold);
+        QCOMPARE(s.fold(acrossTheMiddle(0.0)), FoldRefusal::BadAngle);
+        QCOMPARE(s.fold(acrossTheMiddle(std::nan(""))), FoldRefusal::BadAngle);
+        QVERIFY(!s.folding());
+        QCOMPARE(s.fold(acrossTheMiddle()), FoldRefusal::None);
+        // One edit at a time while the flap is carried.
+        QCOMPARE(s.fold(acrossTheMiddle()), FoldRefusal::Busy);
+        QVERIFY(!s.undoStroke(0));
+        QVERIFY(!s.pin(s.world().sheet.verts.x[0], 0.01));
+        s.grab(s.world().sheet.verts.x[0], true, true);
+        QVERIFY(!s.grabbing());
+        QVERIFY(!s.setTool(Vec3(0, 0.02, 0), 0.03, true, true));
+        s.setTool(Vec3(0, 0.02, 0), 0.03, true, false);
+        QVERIFY(s.folding());
+    }
+
+    void undoGivesBackTheFlatSheetAndRedoTheFold() {
+        EditSession s = editorSession();
+        const std::vector<Vec3> before = s.world().sheet.verts.x;
+        const Index vertices = s.world().sheet.verts.size();
+        s.fold(acrossTheMiddle());
+        runUntilLetGo(s);
+        const auto ended = s.takeFinished();
+        QVERIFY(ended);
+        const std::vector<Vec3> after = s.world().sheet.verts.x;
+        const std::uint64_t folded = stateHash(s.world().sheet);
+        QVERIFY(s.world().sheet.verts.size() > vertices);
+
+        QCOMPARE(s.undoStroke(ended->stroke).value_or(-1), ended->events);
+        QCOMPARE(s.world().sheet.verts.size(), vertices);
+        QVERIFY(s.world().sheet.verts.x == before);
+        QVERIFY(foldAngle(s.world().sheet, length()) < 5.0);
+        for (std::uint8_t p : s.world().sheet.verts.pinned) QCOMPARE(p, std::uint8_t(0));
+
+        QCOMPARE(s.redoStroke(ended->stroke).value_or(-1), ended->events);
+        QVERIFY(s.world().sheet.verts.x == after);
+        QCOMPARE(stateHash(s.world().sheet), folded);
+    }
+
+    void aFoldReplaysBitForBitFromItsRecording() {
+        EditSession s = editorSession();
+        s.fold(acrossTheMiddle(kPi / 2));
+        runUntilLetGo(s);
+        advanceSeconds(s, 1.0);
+        const auto ended = s.takeFinished();
+        QVERIFY(ended);
+        s.undoStroke(ended->stroke);
+        advanceSeconds(s, 0.2);
+        s.redoStroke(ended->stroke);
+        advanceSeconds(s, 0.5);
+        // Through the file: the fold's line, angle and kind survive it.
+        const RecordingLoad load = decodeRecording(encodeRecording(s.log()));
+        QVERIFY2(load.log, qPrintable(load.error));
+        int folds = 0;
+        for (const EditCommand& c : load.log->commands) {
+            if (c.kind != EditCommand::Kind::Fold) continue;
+            ++folds;
+            QVERIFY(c.fold);
+            QCOMPARE(c.fold->angle, kPi / 2);
+            QVERIFY(!c.fold->mountain);
+            QVERIFY(c.fold->to == acrossTheMiddle().to);
+        }
+        QCOMPARE(folds, 1);
+        EditSession again(*load.log);
+        QCOMPARE(replay(*load.log, again), std::string());
+        QCOMPARE(stateHash(again.world().sheet), stateHash(s.world().sheet));
+    }
+
+    void aSheetSavedMidFoldFinishesTheFold() {
+        EditSession s = editorSession();
+        s.fold(acrossTheMiddle(kPi / 2));
+        advanceSeconds(s, 2.0); // round, pressed, not yet opened
+        const WorldLoad load = decodeWorld(encodeWorld(s.worldToSave()));
+        QVERIFY2(load.world, qPrintable(load.error));
+        QCOMPARE(load.world->script.pins.size(), std::size_t(2)); // the carry and the opening
+        Simulation resumed(*load.world);
+        runUntilLetGo(s);
+        advanceSeconds(s, 0.5);
+        while (resumed.world().stepCount < s.world().stepCount)
+            QCOMPARE(resumed.step(), StepStatus::Ok);
+        QCOMPARE(stateHash(resumed.world().sheet), stateHash(s.world().sheet));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFoldTool)
+#include "test_fold_tool.moc"
