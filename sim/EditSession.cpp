@@ -245,9 +245,27 @@ std::optional<EditSession::StrokeEnd> EditSession::pin(const Vec3& point, double
     if (nearest == kNone) return std::nullopt;
     const bool to = !V.pinned[nearest];
     std::vector<Index> changed;
-    for (Index i = 0; i < V.size(); ++i)
-        if (bool(V.pinned[i]) != to && (V.x[i] - point).squaredNorm() <= radius * radius)
-            changed.push_back(i);
+    if (to) {
+        for (Index i = 0; i < V.size(); ++i)
+            if (!V.pinned[i] && (V.x[i] - point).squaredNorm() <= radius * radius)
+                changed.push_back(i);
+    } else {
+        // The whole pinned patch the click landed on: pinned vertices within `radius` of
+        // one another. The paper round a pin moves, so a second click on the pin meets it
+        // a little off where the first did, and must still free all of it.
+        std::vector<std::uint8_t> taken(static_cast<std::size_t>(V.size()), 0);
+        changed.push_back(nearest);
+        taken[static_cast<std::size_t>(nearest)] = 1;
+        for (std::size_t k = 0; k < changed.size(); ++k) {
+            const Vec3 from = V.x[changed[k]];
+            for (Index i = 0; i < V.size(); ++i)
+                if (V.pinned[i] && !taken[static_cast<std::size_t>(i)] &&
+                    (V.x[i] - from).squaredNorm() <= radius * radius) {
+                    taken[static_cast<std::size_t>(i)] = 1;
+                    changed.push_back(i);
+                }
+        }
+    }
     beginStroke();
     setPins(changed, to);
     Stroke stroke;

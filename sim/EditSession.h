@@ -110,8 +110,10 @@ class EditSession {
     // The world as a file should keep it: a grabbed vertex is held, not pinned.
     World worldToSave() const;
     Index grabbedVertex() const { return grabbed_; }
-    // Pin: toggles the vertices within `radius` of `point` — pinned when the one nearest
-    // to it is free, freed when it is pinned. Pinned vertices stand still and are saved
+    // Pin: toggles the vertices around `point` — when the vertex nearest to it (within
+    // `radius`) is free, the free vertices within `radius` of the point are pinned; when
+    // it is pinned, its pinned patch (pinned vertices within `radius` of one another) is
+    // freed. Pinned vertices stand still and are saved
     // with the sheet. An undo step; nothing when no vertex is that close.
     std::optional<StrokeEnd> pin(const Vec3& point, double radius);
 

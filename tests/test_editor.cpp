@@ -1,6 +1,7 @@
 // The editor driven like a user: QTest mouse and actions on a real MainWindow
 // (under xvfb-run), checked against what the simulation thread reports.
 #include "ChartBrowser.h"
+#include "FoldAngle.h"
 #include "Language.h"
 #include "MainWindow.h"
 #include "PaperLookMenu.h"
@@ -115,6 +116,24 @@ std::optional<PickHit> pickAt(MainWindow& w, const QPoint& p) {
     const Viewport* v = w.viewport();
     return pickSheet(*v->snapshot(), v->camera().rayThroughPixel(p.x() + 0.5, p.y() + 0.5,
                                                                  v->width(), v->height()));
+}
+
+// The viewport pixel whose ray meets the sheet nearest to `point`, searched on a grid
+// of 4 pixels.
+QPoint pixelNear(MainWindow& w, const Vec3& point) {
+    QPoint best;
+    double nearest = std::numeric_limits<double>::infinity();
+    const QRect r = w.viewport()->rect();
+    for (int y = r.top(); y < r.bottom(); y += 4)
+        for (int x = r.left(); x < r.right(); x += 4) {
+            const auto hit = pickAt(w, QPoint(x, y));
+            if (!hit || !hit->onSheet) continue;
+            if (const double d = (hit->point - point).norm(); d < nearest) {
+                nearest = d;
+                best = QPoint(x, y);
+            }
+        }
+    return best;
 }
 
 // Every text the window shows a user, in a fixed order: actions (text and tooltip),
@@ -976,6 +995,86 @@ class TestEditor : public QObject {
         for (int k = 0; k < 30; ++k) window->simulation()->stepOnce(); // and kept again
         window->simulation()->sync();
         QCOMPARE(worldOf(*window)->sheet.verts.x, kept->sheet.verts.x);
+    }
+
+    // Tools ▸ Fold: a line drawn across the sheet folds it (the lighter side carried
+    // round, pressed and let go); the crease keeps it; undo gives the flat sheet back,
+    // redo the fold, and the session replays. Undo waits while the flap is carried.
+    void foldFoldsTheSheetAlongTheDrawnLine() {
+        Viewport* view = window->viewport();
+        window->action("tool.fold")->trigger();
+        QVERIFY(window->action("tool.fold")->isChecked());
+        // A step to undo before the fold, so that undo has something to wait with.
+        window->panel()->phiSlider()->setValue(55);
+        QTRY_COMPARE(window->undoStack()->count(), 1);
+        for (int s = 0; s < 240; ++s) window->simulation()->stepOnce();
+        window->simulation()->sync();
+        QTRY_VERIFY(window->viewport()->snapshot()->step == worldOf(*window)->stepCount);
+        QCOMPARE(window->panel()->foldAngleSpin()->value(), 180);
+        QCOMPARE(window->panel()->foldKindBox()->currentIndex(), 0); // valley
+        const QPoint from = pixelNear(*window, Vec3(-0.09, 0.0, 0.0));
+        const QPoint to = pixelNear(*window, Vec3(0.09, 0.0, 0.0));
+        QVERIFY(!from.isNull() && !to.isNull());
+        const auto before = worldOf(*window);
+        QueuedSignalSpy answered(window->simulation(), &SimulationThread::foldAnswered);
+        QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        moveMouse(view, from);
+        QTest::mousePress(view, Qt::LeftButton, {}, from);
+        for (int k = 1; k <= 8; ++k) {
+            moveMouse(view, from + (to - from) * k / 8, Qt::LeftButton);
+            QVERIFY(!view->foldLine().isNull()); // the line shows while it is drawn
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, {}, to);
+        QVERIFY(view->foldLine().isNull());
+        QVERIFY(waitForCount(answered, 1));
+        QCOMPARE(answered.last().at(0).toInt(), int(FoldRefusal::None));
+        QVERIFY(window->statusBar()->currentMessage().startsWith(QStringLiteral("Folding")));
+        // Half way round: the flap stands up, and undo waits for the fold.
+        for (int s = 0; s < 180; ++s) window->simulation()->stepOnce();
+        settledStatus(*window);
+        QTRY_VERIFY(!window->action("undo")->isEnabled());
+        const double halfWay = foldAngle(worldOf(*window)->sheet, 0.297);
+        for (int s = 0; s < 600 && recorded.count() == 0; ++s) window->simulation()->stepOnce();
+        QVERIFY(waitForCount(recorded, 1));
+        QTRY_COMPARE(window->undoStack()->count(), 2);
+        QVERIFY(window->undoStack()->undoText().startsWith(QStringLiteral("Fold")));
+        for (int s = 0; s < 480; ++s) window->simulation()->stepOnce();
+        settledStatus(*window);
+        QTRY_VERIFY(window->action("undo")->isEnabled());
+        const auto folded = worldOf(*window);
+        const double angle = foldAngle(folded->sheet, 0.297);
+        qInfo("fold drawn in the view: %.1f deg half way, %.1f deg 2 s after it was let go",
+              halfWay, angle);
+        QVERIFY(halfWay > 45.0 && halfWay < 135.0);
+        QVERIFY(angle > 170.0);
+        window->undoStack()->undo();
+        window->simulation()->sync();
+        QCOMPARE(worldOf(*window)->sheet.verts.x, before->sheet.verts.x);
+        window->undoStack()->redo();
+        window->simulation()->sync();
+        QVERIFY(foldAngle(worldOf(*window)->sheet, 0.297) > 170.0);
+        for (int s = 0; s < 30; ++s) window->simulation()->stepOnce();
+        checkReplay(*window, nextFile, lastError);
+    }
+
+    // A mountain fold of paper lying face up on the desk would go through the desk: it
+    // is refused with the reason, and nothing changes.
+    void aFoldThatCannotBeMadeSaysWhy() {
+        Viewport* view = window->viewport();
+        window->action("tool.fold")->trigger();
+        window->panel()->foldKindBox()->setCurrentIndex(1); // mountain
+        const QPoint from = pixelNear(*window, Vec3(-0.09, 0.0, 0.0));
+        const QPoint to = pixelNear(*window, Vec3(0.09, 0.0, 0.0));
+        QueuedSignalSpy answered(window->simulation(), &SimulationThread::foldAnswered);
+        moveMouse(view, from);
+        QTest::mousePress(view, Qt::LeftButton, {}, from);
+        moveMouse(view, to, Qt::LeftButton);
+        QTest::mouseRelease(view, Qt::LeftButton, {}, to);
+        QVERIFY(waitForCount(answered, 1));
+        QCOMPARE(answered.last().at(0).toInt(), int(FoldRefusal::DeskInTheWay));
+        QVERIFY(window->statusBar()->currentMessage().contains(QStringLiteral("desk")));
+        QCOMPARE(window->undoStack()->count(), 0);
+        QVERIFY(!settledStatus(*window).folding);
     }
 
     void closingAModifiedSheetAsks() {

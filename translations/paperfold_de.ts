@@ -74,6 +74,13 @@
         <source>Reset</source>
         <translation>Zurücksetzen</translation>
     </message>
+    <message numerus="yes">
+        <source>Fold (%n break(s) or fold(s))</source>
+        <translation>
+            <numerusform>Falten (%n Bruch oder Falte)</numerusform>
+            <numerusform>Falten (%n Brüche oder Falten)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>pf::ActionTexts</name>
@@ -245,6 +252,14 @@
         <source>&amp;Fold (one edge turned over onto the other)</source>
         <translation>Fal&amp;ten (eine Kante auf die andere umgeschlagen)</translation>
     </message>
+    <message>
+        <source>&amp;Fold</source>
+        <translation>&amp;Falten</translation>
+    </message>
+    <message>
+        <source>Fold: draw a line across the paper; the lighter side is carried round it, pressed flat, opened to the angle set in the Parameters panel and let go (L)</source>
+        <translation>Falten: eine Linie über das Papier ziehen; die leichtere Seite wird um sie herumgeführt, flach gepresst, auf den im Bereich Parameter eingestellten Winkel geöffnet und losgelassen (L)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>
@@ -339,8 +354,8 @@
         <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Virtuelles Papier in Echtzeit zerknittern und falten, nach Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;.&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;tools: push, grab, pin&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (push)&lt;/td&gt;&lt;td&gt;press the sphere into the paper and plough it (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (grab)&lt;/td&gt;&lt;td&gt;pick up the point under the cursor and drag it; the wheel lifts or lowers it while held; release lets it fall&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Click&lt;/b&gt; (pin)&lt;/td&gt;&lt;td&gt;pin the paper around the point, or free it if it is pinned&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius (and the pin region)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+K&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, settle, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Werkzeuge: drücken, greifen, anheften&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Linke Maustaste ziehen&lt;/b&gt; (Drücken)&lt;/td&gt;&lt;td&gt;die Kugel ins Papier drücken und es pflügen (ein Rückgängig-Schritt pro Strich)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Linke Maustaste ziehen&lt;/b&gt; (Greifen)&lt;/td&gt;&lt;td&gt;den Punkt unter dem Zeiger aufnehmen und ziehen; das Mausrad hebt oder senkt ihn, solange er gehalten wird; Loslassen lässt ihn fallen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Klick&lt;/b&gt; (Anheften)&lt;/td&gt;&lt;td&gt;das Papier um den Punkt anheften oder lösen, wenn es angeheftet ist&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Strg + Mausrad&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Kugelradius (und der Anheftbereich)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Rechte Maustaste ziehen&lt;/b&gt;, Pfeiltasten&lt;/td&gt;&lt;td&gt;Kamera umkreisen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mittlere Maustaste ziehen&lt;/b&gt;, Umschalt + rechte Maustaste&lt;/td&gt;&lt;td&gt;verschieben&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mausrad&lt;/b&gt;, + und −&lt;/td&gt;&lt;td&gt;zoomen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Ansicht von oben, von vorn, isometrisch; auf das Blatt einpassen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Leertaste&lt;/b&gt;, &lt;b&gt;Strg+.&lt;/b&gt;, &lt;b&gt;Strg+K&lt;/b&gt;, &lt;b&gt;Strg+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Abspielen/Anhalten, Einzelschritt, zur Ruhe kommen lassen, Zurücksetzen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Überlagerungen: Federarten, Bruchwahrscheinlichkeit, Dehnung, letzte Brüche, Drahtgitter&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Strg+Z&lt;/b&gt;, &lt;b&gt;Strg+Umschalt+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;rückgängig, wiederholen&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+        <source>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;, &lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;tools: push, grab, pin, fold&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (push)&lt;/td&gt;&lt;td&gt;press the sphere into the paper and plough it (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (grab)&lt;/td&gt;&lt;td&gt;pick up the point under the cursor and drag it; the wheel lifts or lowers it while held; release lets it fall&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Click&lt;/b&gt; (pin)&lt;/td&gt;&lt;td&gt;pin the paper around the point, or free it if it is pinned&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (fold)&lt;/td&gt;&lt;td&gt;draw the fold line across the paper; the lighter side is carried round it (valley or mountain, and the angle, in the Parameters panel)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius (and the pin region)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+K&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, settle, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;, &lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Werkzeuge: drücken, greifen, anheften, falten&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Linke Maustaste ziehen&lt;/b&gt; (Drücken)&lt;/td&gt;&lt;td&gt;die Kugel ins Papier drücken und es pflügen (ein Rückgängig-Schritt pro Strich)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Linke Maustaste ziehen&lt;/b&gt; (Greifen)&lt;/td&gt;&lt;td&gt;den Punkt unter dem Zeiger aufnehmen und ziehen; das Mausrad hebt oder senkt ihn, solange er gehalten wird; Loslassen lässt ihn fallen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Klick&lt;/b&gt; (Anheften)&lt;/td&gt;&lt;td&gt;das Papier um den Punkt anheften oder lösen, wenn es angeheftet ist&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Linke Maustaste ziehen&lt;/b&gt; (Falten)&lt;/td&gt;&lt;td&gt;die Faltlinie über das Papier ziehen; die leichtere Seite wird um sie herumgeführt (Tal oder Berg und der Winkel im Bereich Parameter)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Strg + Mausrad&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Kugelradius (und der Anheftbereich)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Rechte Maustaste ziehen&lt;/b&gt;, Pfeiltasten&lt;/td&gt;&lt;td&gt;Kamera umkreisen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mittlere Maustaste ziehen&lt;/b&gt;, Umschalt + rechte Maustaste&lt;/td&gt;&lt;td&gt;verschieben&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Mausrad&lt;/b&gt;, + und −&lt;/td&gt;&lt;td&gt;zoomen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Ansicht von oben, von vorn, isometrisch; auf das Blatt einpassen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Leertaste&lt;/b&gt;, &lt;b&gt;Strg+.&lt;/b&gt;, &lt;b&gt;Strg+K&lt;/b&gt;, &lt;b&gt;Strg+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Abspielen/Anhalten, Einzelschritt, zur Ruhe kommen lassen, Zurücksetzen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Überlagerungen: Federarten, Bruchwahrscheinlichkeit, Dehnung, letzte Brüche, Drahtgitter&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Strg+Z&lt;/b&gt;, &lt;b&gt;Strg+Umschalt+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;rückgängig, wiederholen&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
 </context>
 <context>
@@ -490,10 +505,6 @@
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <source>Left drag pushes the paper · G grabs and I pins (Tools menu) · right drag orbits · the wheel zooms · F1 lists every key</source>
-        <translation>Linke Maustaste ziehen drückt das Papier · G greift, I heftet an (Menü Werkzeuge) · rechte Maustaste ziehen dreht die Ansicht · Mausrad zoomt · F1 zeigt alle Tasten</translation>
-    </message>
-    <message>
         <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
         <translation>Angehalten: Das Greifen wirkt, sobald die Simulation läuft (Leertaste oder Schritt).</translation>
     </message>
@@ -512,6 +523,42 @@
     <message>
         <source>An image is being exported; close once it is written.</source>
         <translation>Ein Bild wird exportiert; schließen Sie, sobald es geschrieben ist.</translation>
+    </message>
+    <message>
+        <source>Paused: the fold is carried round once the simulation plays (Space or Step).</source>
+        <translation>Angehalten: Die Faltung wird ausgeführt, sobald die Simulation läuft (Leertaste oder Schritt).</translation>
+    </message>
+    <message>
+        <source>Left drag pushes the paper · L folds, G grabs and I pins (Tools menu) · right drag orbits · the wheel zooms · F1 lists every key</source>
+        <translation>Linke Maustaste ziehen drückt das Papier · L faltet, G greift, I heftet an (Menü Werkzeuge) · rechte Maustaste ziehen dreht die Ansicht · Mausrad zoomt · F1 zeigt alle Tasten</translation>
+    </message>
+    <message>
+        <source>Folding: the paper is carried round the line, pressed and let go…</source>
+        <translation>Falten: Das Papier wird um die Linie geführt, gepresst und losgelassen…</translation>
+    </message>
+    <message>
+        <source>Not folded: draw a longer line across the paper.</source>
+        <translation>Nicht gefaltet: Ziehen Sie eine längere Linie über das Papier.</translation>
+    </message>
+    <message>
+        <source>Not folded: the line must cross the paper.</source>
+        <translation>Nicht gefaltet: Die Linie muss über das Papier gehen.</translation>
+    </message>
+    <message>
+        <source>Not folded: there is paper on one side of the line only.</source>
+        <translation>Nicht gefaltet: Papier liegt nur auf einer Seite der Linie.</translation>
+    </message>
+    <message>
+        <source>Not folded: this way the flap would go through the desk. Fold the other way (Valley or Mountain), or lift the paper first.</source>
+        <translation>Nicht gefaltet: So ginge die Lasche durch den Tisch. Falten Sie andersherum (Tal oder Berg) oder heben Sie das Papier zuerst an.</translation>
+    </message>
+    <message>
+        <source>Not folded: the angle must lie between 1° and 180°.</source>
+        <translation>Nicht gefaltet: Der Winkel muss zwischen 1° und 180° liegen.</translation>
+    </message>
+    <message>
+        <source>Not folded: another edit is under way.</source>
+        <translation>Nicht gefaltet: Eine andere Bearbeitung läuft noch.</translation>
     </message>
 </context>
 <context>
@@ -534,7 +581,7 @@
     </message>
     <message>
         <source>Paper &amp;Grain</source>
-        <translation>PapiersPapier&amp;strukturamp;truktur</translation>
+        <translation>Papier&amp;struktur</translation>
     </message>
     <message>
         <source>P&amp;icture: %1…</source>
@@ -622,6 +669,22 @@
     <message>
         <source>How deep a push presses the sphere into the paper, as a share of its radius: deeper pushes crease harder.</source>
         <translation>Wie tief ein Druck die Kugel ins Papier drückt, als Anteil ihres Radius: tiefere Drucke falten stärker.</translation>
+    </message>
+    <message>
+        <source>Fold</source>
+        <translation>Falten</translation>
+    </message>
+    <message>
+        <source>The Fold tool (L): draw a line across the paper; the lighter side is carried round it, pressed flat, opened to this angle and let go. A valley fold brings the paper&apos;s front faces together, a mountain fold its backs.</source>
+        <translation>Das Werkzeug Falten (L): eine Linie über das Papier ziehen; die leichtere Seite wird um sie herumgeführt, flach gepresst, auf diesen Winkel geöffnet und losgelassen. Eine Talfalte bringt die Vorderseiten des Papiers zusammen, eine Bergfalte die Rückseiten.</translation>
+    </message>
+    <message>
+        <source>Valley</source>
+        <translation>Tal</translation>
+    </message>
+    <message>
+        <source>Mountain</source>
+        <translation>Berg</translation>
     </message>
 </context>
 <context>

@@ -70,6 +70,12 @@
         <source>Reset</source>
         <translation>リセット</translation>
     </message>
+    <message numerus="yes">
+        <source>Fold (%n break(s) or fold(s))</source>
+        <translation>
+            <numerusform>折る（破断または折り目 %n）</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>pf::ActionTexts</name>
@@ -241,6 +247,14 @@
         <source>&amp;Fold (one edge turned over onto the other)</source>
         <translation>折る（片方の端をもう一方に重ねる）(&amp;F)</translation>
     </message>
+    <message>
+        <source>&amp;Fold</source>
+        <translation>折る(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Fold: draw a line across the paper; the lighter side is carried round it, pressed flat, opened to the angle set in the Parameters panel and let go (L)</source>
+        <translation>折る：紙を横切る線を引きます。軽い側が線のまわりに運ばれ、平らに押さえられ、パラメーターパネルで設定した角度まで開かれてから放されます（L）</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>
@@ -335,8 +349,8 @@
         <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;仮想の紙をリアルタイムでくしゃくしゃにし、折ります。Kang &amp;amp; Cho『A Simple and Effective Model for Interactive Paper Folding』に基づきます。&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;tools: push, grab, pin&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (push)&lt;/td&gt;&lt;td&gt;press the sphere into the paper and plough it (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (grab)&lt;/td&gt;&lt;td&gt;pick up the point under the cursor and drag it; the wheel lifts or lowers it while held; release lets it fall&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Click&lt;/b&gt; (pin)&lt;/td&gt;&lt;td&gt;pin the paper around the point, or free it if it is pinned&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius (and the pin region)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+K&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, settle, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;、&lt;b&gt;G&lt;/b&gt;、&lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ツール：押す、つかむ、ピン留め&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;左ドラッグ&lt;/b&gt;（押す）&lt;/td&gt;&lt;td&gt;球を紙に押し込んでかき分けます（1ストロークで1回の取り消し単位）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;左ドラッグ&lt;/b&gt;（つかむ）&lt;/td&gt;&lt;td&gt;カーソルの下の点をつまんでドラッグします。押している間はホイールで上げ下げでき、離すと落ちます&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;クリック&lt;/b&gt;（ピン留め）&lt;/td&gt;&lt;td&gt;その点の周りの紙を固定します。固定済みなら解除します&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + ホイール&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球の半径（とピン留めの範囲）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;右ドラッグ&lt;/b&gt;、矢印キー&lt;/td&gt;&lt;td&gt;カメラを回転&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;中ドラッグ&lt;/b&gt;、Shift + 右ドラッグ&lt;/td&gt;&lt;td&gt;パン&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;ホイール&lt;/b&gt;、+ と −&lt;/td&gt;&lt;td&gt;ズーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;、&lt;b&gt;2&lt;/b&gt;、&lt;b&gt;3&lt;/b&gt;、&lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;上面・正面・等角ビュー、シートに合わせる&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;、&lt;b&gt;Ctrl+.&lt;/b&gt;、&lt;b&gt;Ctrl+K&lt;/b&gt;、&lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;再生/一時停止、1ステップ、静止させる、リセット&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;オーバーレイ：ばねの種類、破断確率、ひずみ、最近の破断、ワイヤーフレーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;、&lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;元に戻す、やり直し&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+        <source>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;, &lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;tools: push, grab, pin, fold&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (push)&lt;/td&gt;&lt;td&gt;press the sphere into the paper and plough it (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (grab)&lt;/td&gt;&lt;td&gt;pick up the point under the cursor and drag it; the wheel lifts or lowers it while held; release lets it fall&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Click&lt;/b&gt; (pin)&lt;/td&gt;&lt;td&gt;pin the paper around the point, or free it if it is pinned&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (fold)&lt;/td&gt;&lt;td&gt;draw the fold line across the paper; the lighter side is carried round it (valley or mountain, and the angle, in the Parameters panel)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius (and the pin region)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+K&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, settle, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;、&lt;b&gt;G&lt;/b&gt;、&lt;b&gt;I&lt;/b&gt;、&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ツール：押す、つかむ、ピン留め、折る&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;左ドラッグ&lt;/b&gt;（押す）&lt;/td&gt;&lt;td&gt;球を紙に押し込んでかき分けます（1ストロークで1回の取り消し単位）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;左ドラッグ&lt;/b&gt;（つかむ）&lt;/td&gt;&lt;td&gt;カーソルの下の点をつまんでドラッグします。押している間はホイールで上げ下げでき、離すと落ちます&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;クリック&lt;/b&gt;（ピン留め）&lt;/td&gt;&lt;td&gt;その点の周りの紙を固定します。固定済みなら解除します&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;左ドラッグ&lt;/b&gt;（折る）&lt;/td&gt;&lt;td&gt;紙を横切る折り線を引きます。軽い側が線のまわりに運ばれます（谷折り・山折りと角度はパラメーターパネルで）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + ホイール&lt;/b&gt;&lt;/td&gt;&lt;td&gt;球の半径（とピン留めの範囲）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;右ドラッグ&lt;/b&gt;、矢印キー&lt;/td&gt;&lt;td&gt;カメラを回転&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;中ドラッグ&lt;/b&gt;、Shift + 右ドラッグ&lt;/td&gt;&lt;td&gt;パン&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;ホイール&lt;/b&gt;、+ と −&lt;/td&gt;&lt;td&gt;ズーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;、&lt;b&gt;2&lt;/b&gt;、&lt;b&gt;3&lt;/b&gt;、&lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;上面・正面・等角ビュー、シートに合わせる&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;、&lt;b&gt;Ctrl+.&lt;/b&gt;、&lt;b&gt;Ctrl+K&lt;/b&gt;、&lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;再生/一時停止、1ステップ、静止させる、リセット&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;オーバーレイ：ばねの種類、破断確率、ひずみ、最近の破断、ワイヤーフレーム&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;、&lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;元に戻す、やり直し&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
 </context>
 <context>
@@ -486,10 +500,6 @@
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <source>Left drag pushes the paper · G grabs and I pins (Tools menu) · right drag orbits · the wheel zooms · F1 lists every key</source>
-        <translation>左ドラッグで紙を押す・G でつかむ、I でピン留め（ツールメニュー）・右ドラッグで回転・ホイールでズーム・F1 ですべてのキー</translation>
-    </message>
-    <message>
         <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
         <translation>一時停止中：つかむ操作はシミュレーションの再生後に反映されます（Space またはステップ）。</translation>
     </message>
@@ -508,6 +518,42 @@
     <message>
         <source>An image is being exported; close once it is written.</source>
         <translation>画像を書き出しています。書き出しが終わってから閉じてください。</translation>
+    </message>
+    <message>
+        <source>Paused: the fold is carried round once the simulation plays (Space or Step).</source>
+        <translation>一時停止中：シミュレーションが再生されると折りが行われます（Space または ステップ）。</translation>
+    </message>
+    <message>
+        <source>Left drag pushes the paper · L folds, G grabs and I pins (Tools menu) · right drag orbits · the wheel zooms · F1 lists every key</source>
+        <translation>左ドラッグで紙を押す・L で折る、G でつかむ、I でピン留め（ツールメニュー）・右ドラッグで回転・ホイールでズーム・F1 ですべてのキー</translation>
+    </message>
+    <message>
+        <source>Folding: the paper is carried round the line, pressed and let go…</source>
+        <translation>折っています：紙を線のまわりに運び、押さえ、放します…</translation>
+    </message>
+    <message>
+        <source>Not folded: draw a longer line across the paper.</source>
+        <translation>折れません：紙を横切るもっと長い線を引いてください。</translation>
+    </message>
+    <message>
+        <source>Not folded: the line must cross the paper.</source>
+        <translation>折れません：線が紙を横切っていません。</translation>
+    </message>
+    <message>
+        <source>Not folded: there is paper on one side of the line only.</source>
+        <translation>折れません：線の片側にしか紙がありません。</translation>
+    </message>
+    <message>
+        <source>Not folded: this way the flap would go through the desk. Fold the other way (Valley or Mountain), or lift the paper first.</source>
+        <translation>折れません：この向きでは折り返しが机を突き抜けます。反対向き（谷折りまたは山折り）に折るか、先に紙を持ち上げてください。</translation>
+    </message>
+    <message>
+        <source>Not folded: the angle must lie between 1° and 180°.</source>
+        <translation>折れません：角度は 1° から 180° の間にしてください。</translation>
+    </message>
+    <message>
+        <source>Not folded: another edit is under way.</source>
+        <translation>折れません：別の編集が進行中です。</translation>
     </message>
 </context>
 <context>
@@ -618,6 +664,22 @@
     <message>
         <source>How deep a push presses the sphere into the paper, as a share of its radius: deeper pushes crease harder.</source>
         <translation>押したときに球を紙へどれだけ深く押し込むか（半径に対する割合）。深いほど強く折り目がつきます。</translation>
+    </message>
+    <message>
+        <source>Fold</source>
+        <translation>折り</translation>
+    </message>
+    <message>
+        <source>The Fold tool (L): draw a line across the paper; the lighter side is carried round it, pressed flat, opened to this angle and let go. A valley fold brings the paper&apos;s front faces together, a mountain fold its backs.</source>
+        <translation>折るツール（L）：紙を横切る線を引きます。軽い側が線のまわりに運ばれ、平らに押さえられ、この角度まで開かれてから放されます。谷折りは紙の表どうしを、山折りは裏どうしを合わせます。</translation>
+    </message>
+    <message>
+        <source>Valley</source>
+        <translation>谷折り</translation>
+    </message>
+    <message>
+        <source>Mountain</source>
+        <translation>山折り</translation>
     </message>
 </context>
 <context>

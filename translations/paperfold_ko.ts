@@ -70,6 +70,12 @@
         <source>Reset</source>
         <translation>초기화</translation>
     </message>
+    <message numerus="yes">
+        <source>Fold (%n break(s) or fold(s))</source>
+        <translation>
+            <numerusform>접기 (파단 또는 접힘 %n개)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>pf::ActionTexts</name>
@@ -241,6 +247,14 @@
         <source>&amp;Fold (one edge turned over onto the other)</source>
         <translation>접기 (한쪽 끝을 다른 쪽 위로 넘김)(&amp;F)</translation>
     </message>
+    <message>
+        <source>&amp;Fold</source>
+        <translation>접기(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Fold: draw a line across the paper; the lighter side is carried round it, pressed flat, opened to the angle set in the Parameters panel and let go (L)</source>
+        <translation>접기: 종이를 가로지르는 선을 그립니다. 가벼운 쪽이 선을 따라 넘겨지고, 평평하게 눌린 뒤, 매개변수 패널에서 정한 각도까지 펼쳐지고 놓입니다 (L)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>
@@ -335,8 +349,8 @@
         <translation>&lt;p&gt;&lt;b&gt;PaperFold %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;가상의 종이를 실시간으로 구기고 접습니다. Kang &amp;amp; Cho, &lt;i&gt;A Simple and Effective Model for Interactive Paper Folding&lt;/i&gt;에 기반합니다.&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;tools: push, grab, pin&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (push)&lt;/td&gt;&lt;td&gt;press the sphere into the paper and plough it (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (grab)&lt;/td&gt;&lt;td&gt;pick up the point under the cursor and drag it; the wheel lifts or lowers it while held; release lets it fall&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Click&lt;/b&gt; (pin)&lt;/td&gt;&lt;td&gt;pin the paper around the point, or free it if it is pinned&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius (and the pin region)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+K&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, settle, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
-        <translation>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;도구: 누르기, 잡기, 고정&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;왼쪽 드래그&lt;/b&gt; (누르기)&lt;/td&gt;&lt;td&gt;구를 종이에 눌러 넣고 밀어 갑니다 (한 번의 스트로크가 한 번의 실행 취소 단위)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;왼쪽 드래그&lt;/b&gt; (잡기)&lt;/td&gt;&lt;td&gt;커서 아래의 점을 집어 끌어 옮깁니다. 누르고 있는 동안 휠로 올리거나 내리고, 놓으면 떨어집니다&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;클릭&lt;/b&gt; (고정)&lt;/td&gt;&lt;td&gt;그 점 주변의 종이를 고정하거나, 고정되어 있으면 풀어 줍니다&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + 휠&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구 반지름 (및 고정 영역)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;오른쪽 드래그&lt;/b&gt;, 화살표 키&lt;/td&gt;&lt;td&gt;카메라 회전&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;가운데 드래그&lt;/b&gt;, Shift + 오른쪽 드래그&lt;/td&gt;&lt;td&gt;이동&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;휠&lt;/b&gt;, + 와 −&lt;/td&gt;&lt;td&gt;확대/축소&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;위, 앞, 등각 보기; 종이에 맞추기&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+K&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;재생/일시 정지, 한 단계, 안정시키기, 초기화&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;오버레이: 스프링 종류, 파단 확률, 변형률, 최근 파단, 와이어프레임&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;실행 취소, 다시 실행&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+        <source>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;, &lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;tools: push, grab, pin, fold&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (push)&lt;/td&gt;&lt;td&gt;press the sphere into the paper and plough it (one undo step per stroke)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (grab)&lt;/td&gt;&lt;td&gt;pick up the point under the cursor and drag it; the wheel lifts or lowers it while held; release lets it fall&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Click&lt;/b&gt; (pin)&lt;/td&gt;&lt;td&gt;pin the paper around the point, or free it if it is pinned&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Left drag&lt;/b&gt; (fold)&lt;/td&gt;&lt;td&gt;draw the fold line across the paper; the lighter side is carried round it (valley or mountain, and the angle, in the Parameters panel)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + wheel&lt;/b&gt;&lt;/td&gt;&lt;td&gt;sphere radius (and the pin region)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Right drag&lt;/b&gt;, arrow keys&lt;/td&gt;&lt;td&gt;orbit the camera&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Middle drag&lt;/b&gt;, Shift + right drag&lt;/td&gt;&lt;td&gt;pan&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Wheel&lt;/b&gt;, + and −&lt;/td&gt;&lt;td&gt;zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;top, front, isometric view; fit to sheet&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+K&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;play/pause, single step, settle, reset&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;overlays: spring kinds, break probability, strain, recent breaks, wireframe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo, redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table cellspacing=&quot;2&quot; cellpadding=&quot;3&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;P&lt;/b&gt;, &lt;b&gt;G&lt;/b&gt;, &lt;b&gt;I&lt;/b&gt;, &lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;도구: 누르기, 잡기, 고정, 접기&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;왼쪽 드래그&lt;/b&gt; (누르기)&lt;/td&gt;&lt;td&gt;구를 종이에 눌러 넣고 밀어 갑니다 (한 번의 스트로크가 한 번의 실행 취소 단위)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;왼쪽 드래그&lt;/b&gt; (잡기)&lt;/td&gt;&lt;td&gt;커서 아래의 점을 집어 끌어 옮깁니다. 누르고 있는 동안 휠로 올리거나 내리고, 놓으면 떨어집니다&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;클릭&lt;/b&gt; (고정)&lt;/td&gt;&lt;td&gt;그 점 주변의 종이를 고정하거나, 고정되어 있으면 풀어 줍니다&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;왼쪽 드래그&lt;/b&gt; (접기)&lt;/td&gt;&lt;td&gt;종이를 가로지르는 접는 선을 그립니다. 가벼운 쪽이 선을 따라 넘겨집니다 (골접기/산접기와 각도는 매개변수 패널에서)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl + 휠&lt;/b&gt;&lt;/td&gt;&lt;td&gt;구 반지름 (및 고정 영역)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;오른쪽 드래그&lt;/b&gt;, 화살표 키&lt;/td&gt;&lt;td&gt;카메라 회전&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;가운데 드래그&lt;/b&gt;, Shift + 오른쪽 드래그&lt;/td&gt;&lt;td&gt;이동&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;휠&lt;/b&gt;, + 와 −&lt;/td&gt;&lt;td&gt;확대/축소&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;1&lt;/b&gt;, &lt;b&gt;2&lt;/b&gt;, &lt;b&gt;3&lt;/b&gt;, &lt;b&gt;F&lt;/b&gt;&lt;/td&gt;&lt;td&gt;위, 앞, 등각 보기; 종이에 맞추기&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Space&lt;/b&gt;, &lt;b&gt;Ctrl+.&lt;/b&gt;, &lt;b&gt;Ctrl+K&lt;/b&gt;, &lt;b&gt;Ctrl+R&lt;/b&gt;&lt;/td&gt;&lt;td&gt;재생/일시 정지, 한 단계, 안정시키기, 초기화&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Alt+1…5&lt;/b&gt;&lt;/td&gt;&lt;td&gt;오버레이: 스프링 종류, 파단 확률, 변형률, 최근 파단, 와이어프레임&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt;, &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;실행 취소, 다시 실행&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>
 </context>
 <context>
@@ -486,10 +500,6 @@
         <translation>도구(&amp;T)</translation>
     </message>
     <message>
-        <source>Left drag pushes the paper · G grabs and I pins (Tools menu) · right drag orbits · the wheel zooms · F1 lists every key</source>
-        <translation>왼쪽 드래그로 종이 누르기 · G 잡기, I 고정 (도구 메뉴) · 오른쪽 드래그로 회전 · 휠로 확대/축소 · F1 모든 키 보기</translation>
-    </message>
-    <message>
         <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
         <translation>일시 정지됨: 잡기는 시뮬레이션이 재생되면 적용됩니다 (Space 또는 한 단계).</translation>
     </message>
@@ -508,6 +518,42 @@
     <message>
         <source>An image is being exported; close once it is written.</source>
         <translation>이미지를 내보내는 중입니다. 다 쓴 뒤에 닫으세요.</translation>
+    </message>
+    <message>
+        <source>Paused: the fold is carried round once the simulation plays (Space or Step).</source>
+        <translation>일시 정지됨: 시뮬레이션이 재생되면 접기가 진행됩니다 (Space 또는 한 단계).</translation>
+    </message>
+    <message>
+        <source>Left drag pushes the paper · L folds, G grabs and I pins (Tools menu) · right drag orbits · the wheel zooms · F1 lists every key</source>
+        <translation>왼쪽 드래그로 종이 누르기 · L 접기, G 잡기, I 고정 (도구 메뉴) · 오른쪽 드래그로 회전 · 휠로 확대/축소 · F1 모든 키 보기</translation>
+    </message>
+    <message>
+        <source>Folding: the paper is carried round the line, pressed and let go…</source>
+        <translation>접는 중: 종이를 선을 따라 넘기고, 누르고, 놓습니다…</translation>
+    </message>
+    <message>
+        <source>Not folded: draw a longer line across the paper.</source>
+        <translation>접지 않음: 종이를 가로지르는 더 긴 선을 그리세요.</translation>
+    </message>
+    <message>
+        <source>Not folded: the line must cross the paper.</source>
+        <translation>접지 않음: 선이 종이를 가로질러야 합니다.</translation>
+    </message>
+    <message>
+        <source>Not folded: there is paper on one side of the line only.</source>
+        <translation>접지 않음: 선의 한쪽에만 종이가 있습니다.</translation>
+    </message>
+    <message>
+        <source>Not folded: this way the flap would go through the desk. Fold the other way (Valley or Mountain), or lift the paper first.</source>
+        <translation>접지 않음: 이 방향이면 접히는 부분이 책상을 뚫고 지나갑니다. 반대로 접거나 (골접기 또는 산접기) 먼저 종이를 들어 올리세요.</translation>
+    </message>
+    <message>
+        <source>Not folded: the angle must lie between 1° and 180°.</source>
+        <translation>접지 않음: 각도는 1°에서 180° 사이여야 합니다.</translation>
+    </message>
+    <message>
+        <source>Not folded: another edit is under way.</source>
+        <translation>접지 않음: 다른 편집이 진행 중입니다.</translation>
     </message>
 </context>
 <context>
@@ -618,6 +664,22 @@
     <message>
         <source>How deep a push presses the sphere into the paper, as a share of its radius: deeper pushes crease harder.</source>
         <translation>누를 때 구를 종이에 얼마나 깊이 눌러 넣을지, 반지름에 대한 비율입니다. 깊을수록 더 강하게 접힙니다.</translation>
+    </message>
+    <message>
+        <source>Fold</source>
+        <translation>접기</translation>
+    </message>
+    <message>
+        <source>The Fold tool (L): draw a line across the paper; the lighter side is carried round it, pressed flat, opened to this angle and let go. A valley fold brings the paper&apos;s front faces together, a mountain fold its backs.</source>
+        <translation>접기 도구 (L): 종이를 가로지르는 선을 그립니다. 가벼운 쪽이 선을 따라 넘겨지고, 평평하게 눌린 뒤, 이 각도까지 펼쳐지고 놓입니다. 골접기는 종이의 앞면끼리, 산접기는 뒷면끼리 맞닿게 합니다.</translation>
+    </message>
+    <message>
+        <source>Valley</source>
+        <translation>골접기</translation>
+    </message>
+    <message>
+        <source>Mountain</source>
+        <translation>산접기</translation>
     </message>
 </context>
 <context>

@@ -41,6 +41,9 @@ void ActionTexts::apply(const QObject* window) {
     set("tool.pin", tr("P&in"),
         tr("Pin: a click pins the paper around the point, or frees it if it is pinned; "
            "Ctrl + wheel sizes the region (I)"));
+    set("tool.fold", tr("&Fold"),
+        tr("Fold: draw a line across the paper; the lighter side is carried round it, "
+           "pressed flat, opened to the angle set in the Parameters panel and let go (L)"));
     set("overlay.springs", tr("&Spring kinds"));
     set("overlay.probability", tr("&Break probability"));
     set("overlay.strain", tr("S&train"));

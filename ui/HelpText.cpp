@@ -8,13 +8,17 @@ void HelpText::showMouseAndKeys(QWidget* parent) {
     QMessageBox::information(
         parent, tr("Mouse and Keys"),
         tr("<table cellspacing=\"2\" cellpadding=\"3\">"
-           "<tr><td><b>P</b>, <b>G</b>, <b>I</b></td><td>tools: push, grab, pin</td></tr>"
+           "<tr><td><b>P</b>, <b>G</b>, <b>I</b>, <b>L</b></td><td>tools: push, grab, pin, "
+           "fold</td></tr>"
            "<tr><td><b>Left drag</b> (push)</td><td>press the sphere into the paper and plough "
            "it (one undo step per stroke)</td></tr>"
            "<tr><td><b>Left drag</b> (grab)</td><td>pick up the point under the cursor and "
            "drag it; the wheel lifts or lowers it while held; release lets it fall</td></tr>"
            "<tr><td><b>Click</b> (pin)</td><td>pin the paper around the point, or free it if "
            "it is pinned</td></tr>"
+           "<tr><td><b>Left drag</b> (fold)</td><td>draw the fold line across the paper; the "
+           "lighter side is carried round it (valley or mountain, and the angle, in the "
+           "Parameters panel)</td></tr>"
            "<tr><td><b>Ctrl + wheel</b></td><td>sphere radius (and the pin region)</td></tr>"
            "<tr><td><b>Right drag</b>, arrow keys</td><td>orbit the camera</td></tr>"
            "<tr><td><b>Middle drag</b>, Shift + right drag</td><td>pan</td></tr>"

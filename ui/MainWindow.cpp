@@ -149,7 +149,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             break;
         case ViewportInput::Tool::Pin:
             break; // a pin holds at once
+        case ViewportInput::Tool::Fold:
+            statusBar()->showMessage(
+                tr("Paused: the fold is carried round once the simulation plays (Space or "
+                   "Step)."),
+                5000);
+            break;
         }
+    });
+    connect(input_, &ViewportInput::foldDrawn, this, [this](const Vec3& from, const Vec3& to) {
+        sim_->fold({from, to, panel_->foldAngle(), panel_->foldMountain()});
+    });
+    connect(sim_.get(), &SimulationThread::foldAnswered, this, [this](int refusal) {
+        statusBar()->showMessage(foldAnswerText(static_cast<FoldRefusal>(refusal)), 8000);
     });
     // An undo or redo lets go of a held grab (EditSession); the hand follows.
     connect(sim_.get(), &SimulationThread::strokeUndone, input_, &ViewportInput::letGo);
@@ -297,9 +309,10 @@ void MainWindow::createActions() {
     const std::pair<const char*, ViewportInput::Tool> kTools[] = {
         {"tool.push", ViewportInput::Tool::Push},
         {"tool.grab", ViewportInput::Tool::Grab},
-        {"tool.pin", ViewportInput::Tool::Pin}};
-    const Qt::Key kToolKeys[] = {Qt::Key_P, Qt::Key_G, Qt::Key_I};
-    for (int k = 0; k < 3; ++k) {
+        {"tool.pin", ViewportInput::Tool::Pin},
+        {"tool.fold", ViewportInput::Tool::Fold}};
+    const Qt::Key kToolKeys[] = {Qt::Key_P, Qt::Key_G, Qt::Key_I, Qt::Key_L};
+    for (int k = 0; k < 4; ++k) {
         QAction* a = make(kTools[k].first, QKeySequence(kToolKeys[k]));
         a->setCheckable(true);
         a->setChecked(k == 0);
@@ -365,7 +378,7 @@ void MainWindow::createMenus() {
     editMenu_->addAction(action("redo"));
 
     toolMenu_ = menuBar()->addMenu(QString());
-    for (const char* name : {"tool.push", "tool.grab", "tool.pin"})
+    for (const char* name : {"tool.push", "tool.grab", "tool.pin", "tool.fold"})
         toolMenu_->addAction(action(name));
 
     viewMenu_ = menuBar()->addMenu(QString());
@@ -391,7 +404,7 @@ void MainWindow::createMenus() {
     for (const char* name : {"open", "save", "undo", "redo", "play", "step", "reset"})
         toolBar_->addAction(action(name));
     toolBar_->addSeparator();
-    for (const char* name : {"tool.push", "tool.grab", "tool.pin"})
+    for (const char* name : {"tool.push", "tool.grab", "tool.pin", "tool.fold"})
         toolBar_->addAction(action(name));
     toolBar_->addSeparator();
     for (const char* name : kOverlayActions) toolBar_->addAction(action(name));
@@ -444,8 +457,8 @@ void MainWindow::retranslate() {
     undoView_->setEmptyLabel(tr("<new sheet>"));
     if (hintShown_)
         viewport_->setHint(
-            tr("Left drag pushes the paper · G grabs and I pins (Tools menu) · right "
-               "drag orbits · the wheel zooms · F1 lists every key"));
+            tr("Left drag pushes the paper · L folds, G grabs and I pins (Tools menu) · "
+               "right drag orbits · the wheel zooms · F1 lists every key"));
     updateTitle();
 }
 
@@ -466,7 +479,35 @@ void MainWindow::onSnapshot() {
     lastHash_ = st.sheetHash;
     readout_->show(st);
     solver_->showStatus(st);
+    // While a fold is carried round, the sheet is the fold's: undo and redo wait for it.
+    if (st.folding != foldUnderWay_) {
+        foldUnderWay_ = st.folding;
+        undoView_->setEnabled(!st.folding);
+    }
+    action("undo")->setEnabled(!st.folding && undo_->canUndo());
+    action("redo")->setEnabled(!st.folding && undo_->canRedo());
     updateTitle();
+}
+
+QString MainWindow::foldAnswerText(FoldRefusal refusal) {
+    switch (refusal) {
+    case FoldRefusal::None:
+        return tr("Folding: the paper is carried round the line, pressed and let go…");
+    case FoldRefusal::ShortLine:
+        return tr("Not folded: draw a longer line across the paper.");
+    case FoldRefusal::OffSheet:
+        return tr("Not folded: the line must cross the paper.");
+    case FoldRefusal::NothingToFold:
+        return tr("Not folded: there is paper on one side of the line only.");
+    case FoldRefusal::DeskInTheWay:
+        return tr("Not folded: this way the flap would go through the desk. Fold the other way "
+                  "(Valley or Mountain), or lift the paper first.");
+    case FoldRefusal::BadAngle:
+        return tr("Not folded: the angle must lie between 1° and 180°.");
+    case FoldRefusal::Busy:
+        return tr("Not folded: another edit is under way.");
+    }
+    return {};
 }
 
 // A sheet from a file is modified when it differs from the file: its positions and

@@ -2,6 +2,7 @@
 
 #include "Camera.h"
 #include "EditorDialogs.h"
+#include "FoldPlan.h"
 #include "Params.h"
 #include "Picking.h"
 #include "RenderOptions.h"
@@ -119,6 +120,9 @@ class MainWindow : public QMainWindow {
     QActionGroup* languageGroup_ = nullptr;
 
     QString scene_ = QStringLiteral("press");
+    bool foldUnderWay_ = false;
+    // What the status bar says to a fold: that it began, or why it was refused.
+    static QString foldAnswerText(FoldRefusal refusal);
     QString file_;
     // What the file holds, and the sheet's state in the newest snapshot (stateHash).
     std::uint64_t savedHash_ = 0, lastHash_ = 0;

@@ -1,5 +1,6 @@
 #include "ParameterPanel.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QGridLayout>
@@ -9,6 +10,7 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 #include <cmath>
+#include <numbers>
 
 namespace pf {
 
@@ -23,6 +25,16 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     depth_ = addSliderRow(grid, 4, 10.0, 100.0, 0, 1.0); // per cent of the radius
     depth_.spin->setValue(60.0);
     depth_.slider->setValue(60);
+    foldLabel_ = new QLabel(this);
+    foldKind_ = new QComboBox(this);
+    foldKind_->addItems({QString(), QString()}); // Valley, Mountain (retranslate)
+    foldAngle_ = new QSpinBox(this);
+    foldAngle_->setRange(1, 180);
+    foldAngle_->setValue(180);
+    foldAngle_->setSuffix(QStringLiteral("°"));
+    grid->addWidget(foldLabel_, 5, 0);
+    grid->addWidget(foldKind_, 5, 1);
+    grid->addWidget(foldAngle_, 5, 2);
 
     advanced_ = new QGroupBox(this);
     advanced_->setCheckable(true);
@@ -190,6 +202,12 @@ double ParameterPanel::sheetWidth() const {
 double ParameterPanel::sheetLength() const {
     return length_->value() / 100.0;
 }
+double ParameterPanel::foldAngle() const {
+    return foldAngle_->value() * std::numbers::pi / 180.0;
+}
+bool ParameterPanel::foldMountain() const {
+    return foldKind_->currentIndex() == 1;
+}
 
 void ParameterPanel::fitNote() {
     // A dock sizes its widget from size hints, which for a word-wrapped label assume a
@@ -232,6 +250,15 @@ void ParameterPanel::retranslate() {
     depth_.label->setToolTip(tr("How deep a push presses the sphere into the paper, as a share of "
                                 "its radius: deeper pushes crease harder."));
     depth_.spin->setSuffix(QStringLiteral(" %"));
+    foldLabel_->setText(tr("Fold"));
+    foldLabel_->setToolTip(
+        tr("The Fold tool (L): draw a line across the paper; the lighter side is carried round "
+           "it, pressed flat, opened to this angle and let go. A valley fold brings the paper's "
+           "front faces together, a mountain fold its backs."));
+    foldKind_->setItemText(0, tr("Valley"));
+    foldKind_->setItemText(1, tr("Mountain"));
+    foldKind_->setToolTip(foldLabel_->toolTip());
+    foldAngle_->setToolTip(foldLabel_->toolTip());
     for (auto* row : {&phi_, &psi_, &sigma_, &radius_, &depth_}) {
         row->slider->setToolTip(row->label->toolTip());
         row->spin->setToolTip(row->label->toolTip());

@@ -4,6 +4,7 @@
 
 #include <QWidget>
 
+class QComboBox;
 class QDoubleSpinBox;
 class QGridLayout;
 class QGroupBox;
@@ -28,6 +29,9 @@ class ParameterPanel : public QWidget {
     int resolution() const;
     double sheetWidth() const;  // metres
     double sheetLength() const; // metres
+    // The Fold tool's choices: the angle the flap ends at, and the kind of fold.
+    double foldAngle() const; // radians
+    bool foldMountain() const;
 
     // The widgets, for tests that drive them.
     QSlider* phiSlider() const { return phi_.slider; }
@@ -35,6 +39,8 @@ class ParameterPanel : public QWidget {
     QSlider* sigmaSlider() const { return sigma_.slider; }
     QDoubleSpinBox* phiSpin() const { return phi_.spin; }
     QDoubleSpinBox* pushDepthSpin() const { return depth_.spin; }
+    QComboBox* foldKindBox() const { return foldKind_; }
+    QSpinBox* foldAngleSpin() const { return foldAngle_; }
 
   signals:
     // A user edit of the parameter `what`. `drag` numbers a slider drag: edits with the
@@ -62,6 +68,9 @@ class ParameterPanel : public QWidget {
     void rowEdited(int row, double value);
 
     SliderRow phi_, psi_, sigma_, radius_, depth_;
+    QLabel* foldLabel_ = nullptr;
+    QComboBox* foldKind_ = nullptr;
+    QSpinBox* foldAngle_ = nullptr;
     QGroupBox* advanced_ = nullptr;
     QLabel *stiffnessLabel_ = nullptr, *bendingLabel_ = nullptr, *resolutionLabel_ = nullptr,
            *sizeLabel_ = nullptr;

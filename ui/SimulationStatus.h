@@ -12,6 +12,7 @@ struct SimulationStatus {
     int breaksLastSecond = 0;                // breaks made in the last second of simulated time
     double maxStrain = 0.0, rmsStrain = 0.0; // |l/l0 - 1| over structural springs
     bool playing = false;
+    bool folding = false;        // a fold is under way: undo, redo and the other tools wait
     std::uint64_t sheetHash = 0; // editedStateHash: tells whether it differs from a file
 };
 

@@ -46,6 +46,7 @@ void SimulationThread::forwardWorkerSignals() {
     forward(&SimulationWorker::strokeUndone, &SimulationThread::strokeUndone);
     forward(&SimulationWorker::strokeRedone, &SimulationThread::strokeRedone);
     forward(&SimulationWorker::settled, &SimulationThread::settled);
+    forward(&SimulationWorker::foldAnswered, &SimulationThread::foldAnswered);
     forward(&SimulationWorker::worldReplaced, &SimulationThread::worldReplaced);
     forward(&SimulationWorker::diverged, &SimulationThread::diverged);
 }
@@ -111,6 +112,9 @@ void SimulationThread::grab(const Vec3& target, bool held, bool begin) {
 }
 void SimulationThread::pin(const Vec3& point, double radius) {
     PF_POST(pin(point, radius));
+}
+void SimulationThread::fold(const FoldRequest& request) {
+    PF_POST(fold(request));
 }
 void SimulationThread::reset(const World& world) {
     PF_POST(reset(world));

@@ -46,6 +46,9 @@ class SimulationThread : public QObject {
     void grab(const Vec3& target, bool held, bool begin);
     // The pin tool: toggles the pins within `radius` of `point` (EditSession::pin).
     void pin(const Vec3& point, double radius);
+    // The fold tool (EditSession::fold); answered by foldAnswered, and by strokeRecorded
+    // once the fold is let go.
+    void fold(const FoldRequest& request);
     // Simulation ▸ Reset: the sheet starts again from `world`, as an undo step
     // (EditSession::reset), unlike replaceWorld.
     void reset(const World& world);
@@ -72,6 +75,8 @@ class SimulationThread : public QObject {
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
     void settled(int stroke);
+    // `refusal` is a FoldRefusal: None when the fold began.
+    void foldAnswered(int refusal);
     // A replaceWorld was applied: the old World is gone and a snapshot of the new one
     // was published (its snapshotReady comes first).
     void worldReplaced();

@@ -69,6 +69,12 @@ void SimulationWorker::pin(const Vec3& point, double radius) {
     if (ended) publish(0.0); // the pins show while paused too
 }
 
+void SimulationWorker::fold(const FoldRequest& request) {
+    const FoldRefusal refusal = session_.fold(request);
+    emit foldAnswered(static_cast<int>(refusal));
+    if (refusal == FoldRefusal::None) publish(0.0); // the flap shows pinned while paused
+}
+
 void SimulationWorker::reset(const World& world) {
     const auto ended = session_.reset(world);
     announce(ended);
@@ -138,6 +144,7 @@ void SimulationWorker::publish(double stepSeconds) {
     st.maxStrain = stats.maxStrain;
     st.rmsStrain = stats.rmsStrain;
     st.playing = playing_;
+    st.folding = session_.folding();
     st.sheetHash = editedStateHash(w.sheet);
     emit published(std::make_shared<const SheetSnapshot>(makeSnapshot(session_.simulation())), st);
 }

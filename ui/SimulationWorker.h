@@ -32,6 +32,7 @@ class SimulationWorker : public QObject {
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
     void grab(const Vec3& target, bool held, bool begin);
     void pin(const Vec3& point, double radius);
+    void fold(const FoldRequest& request);
     void reset(const World& world);
     void undoStroke(int stroke);
     void redoStroke(int stroke);
@@ -47,7 +48,8 @@ class SimulationWorker : public QObject {
     void strokeRecorded(int stroke, int events, int kind);
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
-    void settled(int stroke); // a Settle froze the sheet: an undo step
+    void settled(int stroke);       // a Settle froze the sheet: an undo step
+    void foldAnswered(int refusal); // a FoldRefusal
     void worldReplaced();
     void diverged(qint64 step);
 

@@ -30,6 +30,7 @@ class Viewport::Overlay : public QWidget {
         if (view_->options_.legend && view_->options_.overlays)
             drawLegend(painter, rect(), view_->options_);
         if (!view_->hint_.isEmpty()) drawHint(painter);
+        if (!view_->foldLine_.isNull()) drawFoldLine(painter);
     }
 
   private:
@@ -48,6 +49,19 @@ class Viewport::Overlay : public QWidget {
         painter.drawRoundedRect(box, 6, 6);
         painter.setPen(Qt::white);
         painter.drawText(box.adjusted(pad, pad, -pad, -pad), flags, view_->hint_);
+    }
+
+    // Dashed, dark under light, so that it shows on white paper and on the dark desk.
+    void drawFoldLine(QPainter& painter) {
+        const QLine& line = view_->foldLine_;
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.setPen(QPen(QColor(20, 20, 24, 200), 4, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(line);
+        painter.setPen(QPen(QColor(255, 200, 40), 2, Qt::DashLine, Qt::RoundCap));
+        painter.drawLine(line);
+        painter.setBrush(QColor(255, 200, 40));
+        painter.setPen(Qt::NoPen);
+        for (const QPoint& end : {line.p1(), line.p2()}) painter.drawEllipse(end, 4, 4);
     }
 
   private:
@@ -98,6 +112,11 @@ void Viewport::setSnapshot(std::shared_ptr<const SheetSnapshot> snapshot) {
 void Viewport::setCamera(const OrbitCamera& camera) {
     camera_ = camera;
     update();
+}
+
+void Viewport::setFoldLine(const QLine& line) {
+    foldLine_ = line;
+    overlay_->update();
 }
 
 void Viewport::setHint(const QString& hint) {

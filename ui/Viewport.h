@@ -40,6 +40,9 @@ class Viewport : public QOpenGLWidget {
     // A line of help shown at the bottom of the view (the first-run hint); empty hides it.
     void setHint(const QString& hint);
     const QString& hint() const { return hint_; }
+    // The fold line being drawn, in the view's pixels; a null line hides it.
+    void setFoldLine(const QLine& line);
+    const QLine& foldLine() const { return foldLine_; }
 
     // Empty if GL came up; otherwise why not.
     QString glError() const { return glError_; }
@@ -68,6 +71,7 @@ class Viewport : public QOpenGLWidget {
     RenderOptions options_;
     QString glError_;
     QString hint_;
+    QLine foldLine_;
     double lastFrameSeconds_ = 0.0;
 };
 

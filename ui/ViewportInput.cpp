@@ -25,6 +25,8 @@ void ViewportInput::setToolRadius(double radius) {
 void ViewportInput::setTool(Tool tool) {
     if (tool == tool_) return;
     if (grabbing_) useGrab(grabPixel_, false, false); // let go of what is held
+    foldDrawing_ = false;
+    viewport_->setFoldLine({});
     tool_ = tool;
     hideTool();
     switch (tool) {
@@ -35,6 +37,7 @@ void ViewportInput::setTool(Tool tool) {
         viewport_->setCursor(Qt::OpenHandCursor);
         break;
     case Tool::Pin:
+    case Tool::Fold:
         viewport_->setCursor(Qt::CrossCursor);
         break;
     }
@@ -128,6 +131,33 @@ void ViewportInput::usePin(const QPoint& pixel, bool pressed) {
     emit strokeBegan();
 }
 
+void ViewportInput::useFold(const QPoint& pixel, bool held, bool press) {
+    if (!foldDrawing_) {
+        if (!held || !press) return;
+        const auto hit = pick(pixel);
+        if (!hit || !hit->onSheet) return;
+        foldDrawing_ = true;
+        foldFrom_ = hit->point;
+        foldNormal_ = hit->normal;
+        foldPixel_ = pixel;
+        viewport_->setFoldLine(QLine(pixel, pixel));
+        emit strokeBegan();
+        return;
+    }
+    viewport_->setFoldLine(QLine(foldPixel_, pixel));
+    if (held) return;
+    foldDrawing_ = false;
+    viewport_->setFoldLine({});
+    // Where the cursor's ray meets the paper's plane at the line's start: the line may
+    // end beyond the sheet's edge, as a ruler does.
+    const OrbitCamera::Ray ray = rayAt(pixel);
+    const double along = ray.direction.dot(foldNormal_);
+    if (std::abs(along) < 1e-9) return; // seen edge-on
+    const double t = (foldFrom_ - ray.origin).dot(foldNormal_) / along;
+    if (t <= 0.0) return;
+    emit foldDrawn(foldFrom_, ray.origin + t * ray.direction);
+}
+
 void ViewportInput::hideTool() {
     toolPressed_ = false;
     if (!toolShown_) return;
@@ -207,6 +237,9 @@ bool ViewportInput::eventFilter(QObject* watched, QEvent* event) {
             break;
         case Tool::Pin:
             usePin(pos, left);
+            break;
+        case Tool::Fold:
+            useFold(pos, left, event->type() == QEvent::MouseButtonPress);
             break;
         }
         return true;

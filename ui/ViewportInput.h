@@ -18,7 +18,8 @@ class Viewport;
 // sizes the tool, arrows and +/- orbit and zoom. The left button uses the chosen tool
 // where the cursor's ray meets the sheet: Push presses the sphere into it, Grab picks
 // the point up and drags it in the plane facing the view (the wheel moves it nearer or
-// further meanwhile), Pin toggles the pins around the point. Installed as the viewport's
+// further meanwhile), Pin toggles the pins around the point, Fold draws the line a fold
+// is made along (from press to release, across the paper). Installed as the viewport's
 // event filter.
 class ViewportInput : public QObject {
     Q_OBJECT
@@ -26,7 +27,7 @@ class ViewportInput : public QObject {
   public:
     ViewportInput(Viewport* viewport, SimulationThread* simulation, QObject* parent = nullptr);
 
-    enum class Tool { Push, Grab, Pin };
+    enum class Tool { Push, Grab, Pin, Fold };
     Tool tool() const { return tool_; }
     void setTool(Tool tool);
     // The sheet let go of a held grab (an undo or redo): the hand holds nothing until the
@@ -57,6 +58,8 @@ class ViewportInput : public QObject {
     void toolRadiusChanged(double radius); // by Ctrl + wheel
     void strokeBegan();                    // the left button went down over the sheet
     void acted();                          // any press, wheel or key the view handled
+    // A fold line was drawn from `from` (on the paper) to `to` (in the paper's plane there).
+    void foldDrawn(const pf::Vec3& from, const pf::Vec3& to);
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -66,6 +69,7 @@ class ViewportInput : public QObject {
     // Grab and Pin: the left button at `pixel` (pressed, moved with it held, released).
     void useGrab(const QPoint& pixel, bool held, bool press);
     void usePin(const QPoint& pixel, bool pressed);
+    void useFold(const QPoint& pixel, bool held, bool press);
     std::optional<PickHit> pick(const QPoint& pixel) const;
     OrbitCamera::Ray rayAt(const QPoint& pixel) const;
     Vec3 facing() const; // the view's direction, from the eye
@@ -84,6 +88,9 @@ class ViewportInput : public QObject {
     Vec3 grabPoint_ = Vec3::Zero(); // the plane the grab moves in passes through it
     QPoint grabPixel_;
     bool pinHeld_ = false;
+    bool foldDrawing_ = false;
+    Vec3 foldFrom_ = Vec3::Zero(), foldNormal_ = Vec3::UnitY();
+    QPoint foldPixel_;
     QPoint lastMouse_;
 };
 

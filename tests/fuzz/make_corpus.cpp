@@ -10,6 +10,7 @@
 #include <QDir>
 #include <QFile>
 #include <QImage>
+#include <numbers>
 
 namespace {
 
@@ -60,10 +61,18 @@ int main(int argc, char** argv) {
         session.setParams(p);
         session.setTool(sphere.center, 0.02, true, false);
         session.placeToolAtTarget();
+        // A fold across the middle (refused where the scene has nothing to fold there).
+        const bool folding = session.fold({pf::Vec3(-0.15, 0.0, 0.0), pf::Vec3(0.15, 0.0, 0.0),
+                                           std::numbers::pi / 2, false}) == pf::FoldRefusal::None;
         session.advance(10);
-        if (!writeFile(root.filePath(QStringLiteral("recordings/seed%1.paperrec").arg(n++)),
+        if (!writeFile(root.filePath(QStringLiteral("recordings/seed%1.paperrec").arg(n)),
                        pf::encodeRecording(session.log())))
             return 1;
+        // A sheet saved in the middle of a fold: its pin groups have start times.
+        if (folding && !writeFile(root.filePath(QStringLiteral("sheets/folding%1.paper").arg(n)),
+                                  pf::encodeWorld(session.worldToSave())))
+            return 1;
+        ++n;
     }
     n = 0;
     for (const QImage::Format format : {QImage::Format_RGB32, QImage::Format_ARGB32,
