@@ -549,7 +549,7 @@ FoldRefusal EditSession::fold(const FoldRequest& request) {
     FoldPlan plan = planFold(sim_.world(), request);
     if (plan.refusal != FoldRefusal::None) return plan.refusal;
     beginStroke();
-    setPins(plan.motions.front().vertices, true);
+    for (const PinGroup& g : plan.motions) setPins(g.vertices, true);
     foldRelease_ = plan.release;
     auto& groups = sim_.world().script.pins;
     foldGroup_ = groups.size();

@@ -3,6 +3,7 @@
 #include "Normals.h"
 
 #include <cmath>
+#include <limits>
 
 namespace pf {
 
@@ -67,40 +68,82 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
     const double toward = request.mountain ? -1.0 : 1.0;
     carry.axis = toward * side * axis;
     carry.pivot = request.from + toward * kFoldLift * front;
-    if (world.groundEnabled) {
+    // The lowest point the flap reaches on its way round, with the sheet raised by `lift`.
+    auto lowestOnTheWay = [&](double lift) {
+        double lowest = std::numeric_limits<double>::infinity();
+        const Vec3 up = lift * Vec3::UnitY();
         for (int k = 1; k <= kDeskChecks; ++k) {
             const Eigen::AngleAxisd turn(std::numbers::pi * k / kDeskChecks, carry.axis);
-            for (Index i : carry.vertices) {
-                const Vec3 at = carry.pivot + turn * (V.x[i] - carry.pivot);
-                if (at.y() < world.groundHeight - kDeskTolerance)
-                    return refuse(FoldRefusal::DeskInTheWay);
-            }
+            for (Index i : carry.vertices)
+                lowest = std::min(lowest, (carry.pivot + turn * (V.x[i] - carry.pivot)).y());
         }
+        return lowest + up.y();
+    };
+    // A flap that would pass through the desk (a mountain fold of paper lying face up)
+    // is folded as a hand folds it under: the sheet is lifted off the desk first, by as
+    // much as the flap needs, and put down again once folded.
+    double lift = 0.0;
+    PinGroup rest;
+    if (world.groundEnabled && lowestOnTheWay(0.0) < world.groundHeight - kDeskTolerance) {
+        lift = world.groundHeight + kDeskTolerance - lowestOnTheWay(0.0);
+        for (Index i = 0; i < V.size(); ++i) {
+            // Pins hold the paper down: it cannot be lifted.
+            if (V.pinned[i]) return refuse(FoldRefusal::DeskInTheWay);
+            if (side * (V.x[i] - request.from).dot(across) < -kFoldBand) rest.vertices.push_back(i);
+        }
+        if (rest.vertices.empty()) return refuse(FoldRefusal::DeskInTheWay);
     }
 
-    // Whole steps of turning that end exactly at the angle; the times fall half a step
-    // off the step boundaries so that the clock's rounding cannot move them by a step.
+    // Whole steps of motion; the times fall half a step off the step boundaries so that
+    // the clock's rounding cannot move them by a step.
     const double h = world.params.dt;
-    auto turnBy = [&](PinGroup& g, double angle, double from) {
-        const double steps = std::max(1.0, std::ceil(std::abs(angle) / (kFoldTurnRate * h)));
+    auto stepsFor = [&](double seconds) { return std::max(1.0, std::ceil(seconds / h)); };
+    auto turnBy = [&](PinGroup g, double angle, double from) {
+        const double steps = stepsFor(std::abs(angle) / kFoldTurnRate);
         g.turnRate = angle / (steps * h);
+        g.velocity.setZero();
         g.start = from;
         g.until = from + steps * h;
+        return g;
     };
-    const double now = world.time - 0.5 * h;
-    turnBy(carry, std::numbers::pi, now);
-    double end = carry.until + kFoldPress;
-    if (request.angle < std::numbers::pi) {
-        PinGroup opening = carry;
-        turnBy(opening, request.angle - std::numbers::pi, end);
-        end = opening.until + kFoldHold;
-        plan.motions.push_back(carry);
-        plan.motions.push_back(opening);
-    } else {
-        plan.motions.push_back(carry);
+    auto move = [&](PinGroup g, const Vec3& by, double from) {
+        const double steps = stepsFor(kFoldLiftSeconds);
+        g.turnRate = 0.0;
+        g.velocity = by / (steps * h);
+        g.start = from;
+        g.until = from + steps * h;
+        return g;
+    };
+    double t = world.time - 0.5 * h;
+    std::vector<PinGroup>& motions = plan.motions;
+    const Vec3 up = lift * Vec3::UnitY();
+    if (lift > 0.0) {
+        motions.push_back(move(carry, up, t));
+        motions.push_back(move(rest, up, t));
+        t = motions.back().until;
+        carry.pivot += up;
     }
-    for (PinGroup& g : plan.motions) g.release = end;
-    plan.release = end;
+    motions.push_back(turnBy(carry, std::numbers::pi, t));
+    t = motions.back().until + kFoldPress;
+    if (request.angle < std::numbers::pi) {
+        motions.push_back(turnBy(carry, request.angle - std::numbers::pi, t));
+        t = motions.back().until + kFoldHold;
+    }
+    if (lift > 0.0) {
+        // Down onto the desk: by as much as the lowest paper then lies above it.
+        const Eigen::AngleAxisd turned(request.angle, carry.axis);
+        double lowest = std::numeric_limits<double>::infinity();
+        for (Index i : carry.vertices)
+            lowest = std::min(lowest, (carry.pivot + turned * (V.x[i] + up - carry.pivot)).y());
+        for (Index i : rest.vertices) lowest = std::min(lowest, V.x[i].y() + lift);
+        const Vec3 down =
+            -std::max(0.0, lowest - world.groundHeight - kDeskTolerance) * Vec3::UnitY();
+        motions.push_back(move(carry, down, t));
+        motions.push_back(move(rest, down, t));
+        t = motions.back().until;
+    }
+    for (PinGroup& g : motions) g.release = t;
+    plan.release = t;
     return plan;
 }
 

@@ -11,10 +11,13 @@ namespace pf {
 // lighter one, the flap) is carried round the line toward the paper's front (a valley
 // fold: the fronts come together) or its back (a mountain fold), flat onto the rest,
 // held there so that the crease is pressed, opened back to `angle` and let go, as a
-// hand folds paper: a crease that was never pressed flat springs open. The line stands for the
-// whole straight line through its two points, as on paper. Nothing is rotated rigidly into place:
-// the flap is carried as a hand carries it, and the crease forms in the band along the line, where
-// the paper bends, through the model's own breaks and hinges (docs/model.md, "The Fold tool").
+// hand folds paper: a crease that was never pressed flat springs open. Where the flap
+// would pass through the desk (a mountain fold of paper lying face up), the sheet is
+// lifted off it first and put down again once folded. The line stands for the whole
+// straight line through its two points, as on paper. Nothing is rotated rigidly into
+// place: the flap is carried as a hand carries it, and the crease forms in the band
+// along the line, where the paper bends, through the model's own breaks and hinges
+// (docs/model.md, "The Fold tool").
 struct FoldRequest {
     Vec3 from = Vec3::Zero(), to = Vec3::Zero();
     double angle = std::numbers::pi; // radians, in (0, π]
@@ -26,16 +29,17 @@ enum class FoldRefusal : std::uint8_t {
     ShortLine,     // shorter than kMinFoldLine
     OffSheet,      // no paper along the line
     NothingToFold, // no paper beyond the band on one side, or none on the other
-    DeskInTheWay,  // the flap would be carried through the ground
+    DeskInTheWay,  // the flap would pass through the ground, and pins hold the sheet down
     BadAngle,      // not in (0, π]
     Busy           // another edit is under way (EditSession)
 };
 
 struct FoldPlan {
     FoldRefusal refusal = FoldRefusal::None;
-    // The flap's motions, in this order (applyScript lets a later group take over): the
-    // carry round by π, then, for an angle below π, the opening back to it. Both let go
-    // at `release`.
+    // The motions, in this order (applyScript lets a later group take over): the lift of
+    // the flap and of the rest of the sheet (when the desk is in the way), the carry
+    // round by π, the opening back to the angle (below π), and the lowering back onto
+    // the desk. All let go at `release`.
     std::vector<PinGroup> motions;
     double release = 0.0;
 };
@@ -49,6 +53,8 @@ constexpr double kFoldHold = 0.5;  // s
 // The line the flap turns about lies this far off the paper, on the side it folds to:
 // the two layers of a flat fold then lie a paper's crumple apart, not in each other.
 constexpr double kFoldLift = 0.003; // m
+// A fold that must lift the sheet off the desk lifts it, and puts it down, in this time.
+constexpr double kFoldLiftSeconds = 0.5; // s
 // Vertices closer to the line than this stay free: the crease forms there.
 constexpr double kFoldBand = 0.01;    // m
 constexpr double kMinFoldLine = 0.01; // m

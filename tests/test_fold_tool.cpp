@@ -136,10 +136,42 @@ class TestFoldTool : public QObject {
         }
     }
 
+    void aMountainFoldOnTheDeskLiftsThePaperAndFoldsTheFlapUnder() {
+        EditSession s = editorSession();
+        QCOMPARE(s.fold(acrossTheMiddle(kPi, true)), FoldRefusal::None);
+        // Lifted first (the flap and the rest of the sheet), then turned, then put down.
+        const auto& groups = s.world().script.pins;
+        QCOMPARE(groups.size(), std::size_t(5));
+        const std::vector<Index> flap = groups[0].vertices, rest = groups[1].vertices;
+        auto meanHeight = [&](const std::vector<Index>& vs) {
+            double sum = 0.0;
+            for (Index i : vs) sum += s.world().sheet.verts.x[i].y();
+            return sum / double(vs.size());
+        };
+        advanceSeconds(s, kFoldLiftSeconds);
+        const double lifted = std::min(meanHeight(flap), meanHeight(rest));
+        const double took = kFoldLiftSeconds + runUntilLetGo(s);
+        advanceSeconds(s, 5.0);
+        const double angle = foldAngle(s.world().sheet, length());
+        qInfo("mountain fold on the desk: lifted %.3f m, let go after %.2f s; 5 s later %.1f deg, "
+              "flap at %.4f m under the rest at %.4f m",
+              lifted, took, angle, meanHeight(flap), meanHeight(rest));
+        QVERIFY(lifted > 0.1); // clear of the desk for the flap to pass under
+        QVERIFY(std::abs(took - (2 * kFoldLiftSeconds + kPi / kFoldTurnRate + kFoldPress)) < 0.02);
+        QVERIFY(angle > 170.0);
+        QVERIFY(meanHeight(flap) < meanHeight(rest));
+        for (const Vec3& x : s.world().sheet.verts.x) QVERIFY(x.y() < 0.03); // back down
+    }
+
     void whatCannotBeFoldedIsRefusedWithItsReason() {
         EditSession s = editorSession();
-        // The paper faces up on the desk: a mountain fold would carry the flap through it.
+        // The paper faces up on the desk, and a pin holds it down: a mountain fold would
+        // carry the flap through the desk, and the sheet cannot be lifted over it.
+        const Vec3 corner = s.world().sheet.verts.x[0];
+        const auto pinned = s.pin(corner, 0.005);
+        QVERIFY(pinned);
         QCOMPARE(s.fold(acrossTheMiddle(kPi, true)), FoldRefusal::DeskInTheWay);
+        QVERIFY(s.undoStroke(pinned->stroke));
         QCOMPARE(s.fold({Vec3(0, 0, 0), Vec3(0.005, 0, 0), kPi, false}), FoldRefusal::ShortLine);
         QCOMPARE(s.fold({Vec3(-0.15, 0, 0.5), Vec3(0.15, 0, 0.5), kPi, false}),
                  FoldRefusal::OffSheet);

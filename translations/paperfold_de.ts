@@ -549,16 +549,16 @@
         <translation>Nicht gefaltet: Papier liegt nur auf einer Seite der Linie.</translation>
     </message>
     <message>
-        <source>Not folded: this way the flap would go through the desk. Fold the other way (Valley or Mountain), or lift the paper first.</source>
-        <translation>Nicht gefaltet: So ginge die Lasche durch den Tisch. Falten Sie andersherum (Tal oder Berg) oder heben Sie das Papier zuerst an.</translation>
-    </message>
-    <message>
         <source>Not folded: the angle must lie between 1° and 180°.</source>
         <translation>Nicht gefaltet: Der Winkel muss zwischen 1° und 180° liegen.</translation>
     </message>
     <message>
         <source>Not folded: another edit is under way.</source>
         <translation>Nicht gefaltet: Eine andere Bearbeitung läuft noch.</translation>
+    </message>
+    <message>
+        <source>Not folded: this way the flap would go through the desk, and pins hold the paper down. Fold the other way (Valley or Mountain), or unpin the paper.</source>
+        <translation>Nicht gefaltet: So ginge die Lasche durch den Tisch, und angeheftete Stellen halten das Papier fest. Falten Sie andersherum (Tal oder Berg) oder lösen Sie die Anheftung.</translation>
     </message>
 </context>
 <context>

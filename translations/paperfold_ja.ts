@@ -544,16 +544,16 @@
         <translation>折れません：線の片側にしか紙がありません。</translation>
     </message>
     <message>
-        <source>Not folded: this way the flap would go through the desk. Fold the other way (Valley or Mountain), or lift the paper first.</source>
-        <translation>折れません：この向きでは折り返しが机を突き抜けます。反対向き（谷折りまたは山折り）に折るか、先に紙を持ち上げてください。</translation>
-    </message>
-    <message>
         <source>Not folded: the angle must lie between 1° and 180°.</source>
         <translation>折れません：角度は 1° から 180° の間にしてください。</translation>
     </message>
     <message>
         <source>Not folded: another edit is under way.</source>
         <translation>折れません：別の編集が進行中です。</translation>
+    </message>
+    <message>
+        <source>Not folded: this way the flap would go through the desk, and pins hold the paper down. Fold the other way (Valley or Mountain), or unpin the paper.</source>
+        <translation>折れません：この向きでは折り返しが机を突き抜け、ピンが紙を押さえているため持ち上げられません。反対向き（谷折りまたは山折り）に折るか、ピンを外してください。</translation>
     </message>
 </context>
 <context>

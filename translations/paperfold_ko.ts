@@ -544,16 +544,16 @@
         <translation>접지 않음: 선의 한쪽에만 종이가 있습니다.</translation>
     </message>
     <message>
-        <source>Not folded: this way the flap would go through the desk. Fold the other way (Valley or Mountain), or lift the paper first.</source>
-        <translation>접지 않음: 이 방향이면 접히는 부분이 책상을 뚫고 지나갑니다. 반대로 접거나 (골접기 또는 산접기) 먼저 종이를 들어 올리세요.</translation>
-    </message>
-    <message>
         <source>Not folded: the angle must lie between 1° and 180°.</source>
         <translation>접지 않음: 각도는 1°에서 180° 사이여야 합니다.</translation>
     </message>
     <message>
         <source>Not folded: another edit is under way.</source>
         <translation>접지 않음: 다른 편집이 진행 중입니다.</translation>
+    </message>
+    <message>
+        <source>Not folded: this way the flap would go through the desk, and pins hold the paper down. Fold the other way (Valley or Mountain), or unpin the paper.</source>
+        <translation>접지 않음: 이 방향이면 접히는 부분이 책상을 뚫고 지나가는데, 고정점이 종이를 붙잡고 있어 들어 올릴 수 없습니다. 반대로 접거나 (골접기 또는 산접기) 고정을 푸세요.</translation>
     </message>
 </context>
 <context>

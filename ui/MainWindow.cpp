@@ -500,8 +500,8 @@ QString MainWindow::foldAnswerText(FoldRefusal refusal) {
     case FoldRefusal::NothingToFold:
         return tr("Not folded: there is paper on one side of the line only.");
     case FoldRefusal::DeskInTheWay:
-        return tr("Not folded: this way the flap would go through the desk. Fold the other way "
-                  "(Valley or Mountain), or lift the paper first.");
+        return tr("Not folded: this way the flap would go through the desk, and pins hold the "
+                  "paper down. Fold the other way (Valley or Mountain), or unpin the paper.");
     case FoldRefusal::BadAngle:
         return tr("Not folded: the angle must lie between 1° and 180°.");
     case FoldRefusal::Busy:
