@@ -2,6 +2,7 @@
 
 #include "Normals.h"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
 
@@ -32,20 +33,28 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
     const Sheet& sheet = world.sheet;
     const auto& V = sheet.verts;
 
-    // Which way the paper's front faces along the line (its normals follow the
-    // triangles' winding, so they tell front from back however the sheet lies).
+    // The paper's plane along the line: the principal direction of its normals there.
+    // Not their mean: where the paper already lies folded, its layers face opposite ways
+    // and their normals cancel. It faces the viewer (`front`).
     std::vector<Vec3> normals;
     computeVertexNormals(sheet, normals);
     const Vec3 along = line.normalized();
-    Vec3 front = Vec3::Zero();
+    Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+    int near = 0;
     for (Index i = 0; i < V.size(); ++i) {
         const Vec3 r = V.x[i] - request.from;
         const double t = r.dot(along);
         if (t < -kFacingReach || t > line.norm() + kFacingReach) continue;
-        if ((r - t * along).norm() <= kFacingReach) front += normals[static_cast<std::size_t>(i)];
+        if ((r - t * along).norm() > kFacingReach) continue;
+        const Vec3& n = normals[static_cast<std::size_t>(i)];
+        spread += n * n.transpose();
+        ++near;
     }
-    if (!(front.norm() > 0.0)) return refuse(FoldRefusal::OffSheet);
-    front.normalize();
+    if (near == 0 || !(spread.norm() > 0.0)) return refuse(FoldRefusal::OffSheet);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(spread);
+    Vec3 front = principal.eigenvectors().col(2); // the largest eigenvalue's
+    const Vec3 viewer = request.viewer.norm() > 0.0 ? request.viewer : Vec3::UnitY();
+    if (front.dot(viewer) < 0.0) front = -front;
     // The line in the paper's plane there, and the direction across it.
     Vec3 axis = along - along.dot(front) * front;
     if (!(axis.norm() > 1e-6)) return refuse(FoldRefusal::ShortLine); // drawn along the normal

@@ -8,8 +8,8 @@
 namespace pf {
 
 // A fold along a line drawn across the sheet: the part on one side of the line (the
-// lighter one, the flap) is carried round the line toward the paper's front (a valley
-// fold: the fronts come together) or its back (a mountain fold), flat onto the rest,
+// lighter one, the flap) is carried round the line toward the viewer (a valley fold: seen
+// from there the crease is a valley) or away (a mountain fold), flat onto the rest,
 // held there so that the crease is pressed, opened back to `angle` and let go, as a
 // hand folds paper: a crease that was never pressed flat springs open. Where the flap
 // would pass through the desk (a mountain fold of paper lying face up), the sheet is
@@ -22,6 +22,8 @@ struct FoldRequest {
     Vec3 from = Vec3::Zero(), to = Vec3::Zero();
     double angle = std::numbers::pi; // radians, in (0, π]
     bool mountain = false;
+    // Toward the one who folds (the editor's eye); zero: from above.
+    Vec3 viewer = Vec3::UnitY();
 };
 
 enum class FoldRefusal : std::uint8_t {

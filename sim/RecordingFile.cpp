@@ -21,8 +21,8 @@ namespace {
 // the worlds entry of a reset, the folds entry of a fold), target 3 × f64, radius f64;
 // little-endian.
 constexpr qsizetype kCommandBytes = 48;
-// A fold's line end 3 × f64 and angle f64, in the "folds" bytes.
-constexpr qsizetype kFoldBytes = 32;
+// A fold's line end 3 × f64, angle f64 and viewer 3 × f64, in the "folds" bytes.
+constexpr qsizetype kFoldBytes = 56;
 
 template <typename T> void put(QByteArray& out, T v) {
     char b[sizeof(T)];
@@ -92,6 +92,7 @@ QByteArray encodeRecording(const EditLog& log) {
             argument = static_cast<std::int32_t>(folds.size() / kFoldBytes);
             for (int k = 0; k < 3; ++k) putF64(folds, c.fold->to[k]);
             putF64(folds, c.fold->angle);
+            for (int k = 0; k < 3; ++k) putF64(folds, c.fold->viewer[k]);
         }
         put<std::int64_t>(commands, c.step);
         put<std::uint8_t>(commands, static_cast<std::uint8_t>(c.kind));
@@ -225,10 +226,12 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
             fold.from = c.target;
             for (int k = 0; k < 3; ++k) fold.to[k] = takeF64(f + 8 * k);
             fold.angle = takeF64(f + 24);
+            for (int k = 0; k < 3; ++k) fold.viewer[k] = takeF64(f + 32 + 8 * k);
             fold.mountain = flags & 4;
             // The session refuses an angle out of range, as the editor does; only what
             // could not be computed with is refused here.
-            if (!finiteWithin(fold.to.norm(), kDivergenceRadius) || !finiteWithin(fold.angle, 10.0))
+            if (!finiteWithin(fold.to.norm(), kDivergenceRadius) ||
+                !finiteWithin(fold.angle, 10.0) || !finiteWithin(fold.viewer.norm(), 10.0))
                 return bad(where + QStringLiteral(": fold line or angle out of range"));
             c.fold = std::make_shared<const FoldRequest>(fold);
         } else {

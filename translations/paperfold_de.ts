@@ -675,16 +675,16 @@
         <translation>Falten</translation>
     </message>
     <message>
-        <source>The Fold tool (L): draw a line across the paper; the lighter side is carried round it, pressed flat, opened to this angle and let go. A valley fold brings the paper&apos;s front faces together, a mountain fold its backs.</source>
-        <translation>Das Werkzeug Falten (L): eine Linie über das Papier ziehen; die leichtere Seite wird um sie herumgeführt, flach gepresst, auf diesen Winkel geöffnet und losgelassen. Eine Talfalte bringt die Vorderseiten des Papiers zusammen, eine Bergfalte die Rückseiten.</translation>
-    </message>
-    <message>
         <source>Valley</source>
         <translation>Tal</translation>
     </message>
     <message>
         <source>Mountain</source>
         <translation>Berg</translation>
+    </message>
+    <message>
+        <source>The Fold tool (L): draw a line across the paper; the lighter side is carried round it, pressed flat, opened to this angle and let go. A valley fold turns the flap up toward you, a mountain fold away from you, under the paper.</source>
+        <translation>Das Werkzeug Falten (L): eine Linie über das Papier ziehen; die leichtere Seite wird um sie herumgeführt, flach gepresst, auf diesen Winkel geöffnet und losgelassen. Eine Talfalte klappt die Lasche zu Ihnen hin nach oben, eine Bergfalte von Ihnen weg unter das Papier.</translation>
     </message>
 </context>
 <context>

@@ -670,16 +670,16 @@
         <translation>折り</translation>
     </message>
     <message>
-        <source>The Fold tool (L): draw a line across the paper; the lighter side is carried round it, pressed flat, opened to this angle and let go. A valley fold brings the paper&apos;s front faces together, a mountain fold its backs.</source>
-        <translation>折るツール（L）：紙を横切る線を引きます。軽い側が線のまわりに運ばれ、平らに押さえられ、この角度まで開かれてから放されます。谷折りは紙の表どうしを、山折りは裏どうしを合わせます。</translation>
-    </message>
-    <message>
         <source>Valley</source>
         <translation>谷折り</translation>
     </message>
     <message>
         <source>Mountain</source>
         <translation>山折り</translation>
+    </message>
+    <message>
+        <source>The Fold tool (L): draw a line across the paper; the lighter side is carried round it, pressed flat, opened to this angle and let go. A valley fold turns the flap up toward you, a mountain fold away from you, under the paper.</source>
+        <translation>折るツール（L）：紙を横切る線を引きます。軽い側が線のまわりに運ばれ、平らに押さえられ、この角度まで開かれてから放されます。谷折りは折り返しを手前（上）へ、山折りは奥（紙の下）へ折ります。</translation>
     </message>
 </context>
 <context>

@@ -670,16 +670,16 @@
         <translation>접기</translation>
     </message>
     <message>
-        <source>The Fold tool (L): draw a line across the paper; the lighter side is carried round it, pressed flat, opened to this angle and let go. A valley fold brings the paper&apos;s front faces together, a mountain fold its backs.</source>
-        <translation>접기 도구 (L): 종이를 가로지르는 선을 그립니다. 가벼운 쪽이 선을 따라 넘겨지고, 평평하게 눌린 뒤, 이 각도까지 펼쳐지고 놓입니다. 골접기는 종이의 앞면끼리, 산접기는 뒷면끼리 맞닿게 합니다.</translation>
-    </message>
-    <message>
         <source>Valley</source>
         <translation>골접기</translation>
     </message>
     <message>
         <source>Mountain</source>
         <translation>산접기</translation>
+    </message>
+    <message>
+        <source>The Fold tool (L): draw a line across the paper; the lighter side is carried round it, pressed flat, opened to this angle and let go. A valley fold turns the flap up toward you, a mountain fold away from you, under the paper.</source>
+        <translation>접기 도구 (L): 종이를 가로지르는 선을 그립니다. 가벼운 쪽이 선을 따라 넘겨지고, 평평하게 눌린 뒤, 이 각도까지 펼쳐지고 놓입니다. 골접기는 접히는 부분을 내 쪽(위)으로, 산접기는 반대쪽(종이 아래)으로 접습니다.</translation>
     </message>
 </context>
 <context>

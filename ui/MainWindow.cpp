@@ -158,7 +158,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         }
     });
     connect(input_, &ViewportInput::foldDrawn, this, [this](const Vec3& from, const Vec3& to) {
-        sim_->fold({from, to, panel_->foldAngle(), panel_->foldMountain()});
+        // Valley and mountain as the user sees the paper: toward the eye, or away.
+        const Vec3 viewer = (viewport_->camera().eye() - from).normalized();
+        sim_->fold({from, to, panel_->foldAngle(), panel_->foldMountain(), viewer});
     });
     connect(sim_.get(), &SimulationThread::foldAnswered, this, [this](int refusal) {
         statusBar()->showMessage(foldAnswerText(static_cast<FoldRefusal>(refusal)), 8000);

@@ -253,8 +253,8 @@ void ParameterPanel::retranslate() {
     foldLabel_->setText(tr("Fold"));
     foldLabel_->setToolTip(
         tr("The Fold tool (L): draw a line across the paper; the lighter side is carried round "
-           "it, pressed flat, opened to this angle and let go. A valley fold brings the paper's "
-           "front faces together, a mountain fold its backs."));
+           "it, pressed flat, opened to this angle and let go. A valley fold turns the flap up "
+           "toward you, a mountain fold away from you, under the paper."));
     foldKind_->setItemText(0, tr("Valley"));
     foldKind_->setItemText(1, tr("Mountain"));
     foldKind_->setToolTip(foldLabel_->toolTip());

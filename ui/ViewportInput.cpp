@@ -134,8 +134,9 @@ void ViewportInput::usePin(const QPoint& pixel, bool pressed) {
 void ViewportInput::useFold(const QPoint& pixel, bool held, bool press) {
     if (!foldDrawing_) {
         if (!held || !press) return;
+        // The line may start off the paper, on the desk, as a ruler laid across it does.
         const auto hit = pick(pixel);
-        if (!hit || !hit->onSheet) return;
+        if (!hit) return;
         foldDrawing_ = true;
         foldFrom_ = hit->point;
         foldNormal_ = hit->normal;

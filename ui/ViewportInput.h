@@ -58,7 +58,8 @@ class ViewportInput : public QObject {
     void toolRadiusChanged(double radius); // by Ctrl + wheel
     void strokeBegan();                    // the left button went down over the sheet
     void acted();                          // any press, wheel or key the view handled
-    // A fold line was drawn from `from` (on the paper) to `to` (in the paper's plane there).
+    // A fold line was drawn from `from` (on the paper or the desk) to `to` (in the plane
+    // facing the way the paper or desk did there).
     void foldDrawn(const pf::Vec3& from, const pf::Vec3& to);
 
   protected:
