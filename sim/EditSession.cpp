@@ -6,6 +6,7 @@
 #include "Scenes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -15,6 +16,7 @@ EditSession::EditSession(World world) : sim_(std::move(world)) {
     // The user drives the sphere; a scene's scripted path would fight the mouse.
     sim_.world().script.sphereKeys.clear();
     toolTarget_ = sim_.world().sphere.center;
+    adoptFoldUnderWay();
     beginLog();
 }
 
@@ -23,6 +25,7 @@ EditSession::EditSession(const EditLog& log) : sim_(log.start) {
     toolTarget_ = log.toolTarget;
     pressed_ = log.pressed;
     if (pressed_) beginStroke(); // as replaceWorld did when the recording began
+    adoptFoldUnderWay();
     beginLog();
 }
 
@@ -127,6 +130,7 @@ void EditSession::replaceWorld(const World& world) {
     sheet_ = 0;
     // A stroke held across New goes on from the new sheet.
     if (pressed_) beginStroke();
+    adoptFoldUnderWay();
     beginLog();
 }
 
@@ -250,21 +254,30 @@ std::optional<EditSession::StrokeEnd> EditSession::pin(const Vec3& point, double
             if (!V.pinned[i] && (V.x[i] - point).squaredNorm() <= radius * radius)
                 changed.push_back(i);
     } else {
-        // The whole pinned patch the click landed on: pinned vertices within `radius` of
-        // one another. The paper round a pin moves, so a second click on the pin meets it
-        // a little off where the first did, and must still free all of it.
+        // The whole pinned patch the click landed on: pinned vertices joined by springs,
+        // up to kPinPatchReach radii from the click. The paper round a pin moves, so a
+        // second click on the pin meets it a little off where the first did, and must
+        // still free all of it; a pin further off is another pin.
+        const Springs& S = sim_.world().sheet.springs;
+        const double reach2 = kPinPatchReach * kPinPatchReach * radius * radius;
+        auto inPatch = [&](Index i) {
+            return V.pinned[i] && (V.x[i] - point).squaredNorm() <= reach2;
+        };
+        std::vector<std::vector<Index>> joined(static_cast<std::size_t>(V.size()));
+        for (Index k = 0; k < S.size(); ++k)
+            if (inPatch(S.a[k]) && inPatch(S.b[k])) {
+                joined[static_cast<std::size_t>(S.a[k])].push_back(S.b[k]);
+                joined[static_cast<std::size_t>(S.b[k])].push_back(S.a[k]);
+            }
         std::vector<std::uint8_t> taken(static_cast<std::size_t>(V.size()), 0);
         changed.push_back(nearest);
         taken[static_cast<std::size_t>(nearest)] = 1;
-        for (std::size_t k = 0; k < changed.size(); ++k) {
-            const Vec3 from = V.x[changed[k]];
-            for (Index i = 0; i < V.size(); ++i)
-                if (V.pinned[i] && !taken[static_cast<std::size_t>(i)] &&
-                    (V.x[i] - from).squaredNorm() <= radius * radius) {
-                    taken[static_cast<std::size_t>(i)] = 1;
-                    changed.push_back(i);
+        for (std::size_t k = 0; k < changed.size(); ++k)
+            for (Index j : joined[static_cast<std::size_t>(changed[k])])
+                if (!taken[static_cast<std::size_t>(j)]) {
+                    taken[static_cast<std::size_t>(j)] = 1;
+                    changed.push_back(j);
                 }
-        }
     }
     beginStroke();
     setPins(changed, to);
@@ -298,6 +311,7 @@ EditSession::MeshSize EditSession::meshSize() const {
 }
 
 void EditSession::beginStroke() {
+    keepSettlingWithLastStroke();
     pressedFrozen_ = settle_ == Settle::Frozen;
     setSettle(Settle::None);
     strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
@@ -308,14 +322,7 @@ void EditSession::beginStroke() {
 std::optional<EditSession::StrokeEnd> EditSession::endStroke(StrokeKind kind) {
     const Sheet& s = sim_.world().sheet;
     Stroke stroke;
-    for (Index e = strokeStart_; e < static_cast<Index>(s.events.size()); ++e) {
-        const DamageEvent& ev = s.events[e];
-        if (!ev.active) continue;
-        StrokeEvent se{e, ev.kind, ev.edge, 0.0, 0.0};
-        if (ev.kind == EventKind::Hinge) se.hingeRest = s.springs.rest[ev.springs[0]];
-        if (ev.kind == EventKind::Break) se.creaseRest = s.springs.rest[ev.edge];
-        stroke.events.push_back(se);
-    }
+    appendEvents(stroke, strokeStart_);
     bool moved = stroke.events.size() > 0 || pressedLook_.x.size() != s.verts.x.size();
     for (std::size_t i = 0; !moved && i < pressedLook_.x.size(); ++i)
         moved = (s.verts.x[i] - pressedLook_.x[i]).squaredNorm() > kStrokeMoves * kStrokeMoves;
@@ -339,8 +346,31 @@ Vec3 EditSession::boundedMove(const Vec3& from, const Vec3& to) const {
     return move;
 }
 
+void EditSession::appendEvents(Stroke& stroke, Index from) const {
+    const Sheet& s = sim_.world().sheet;
+    for (Index e = from; e < static_cast<Index>(s.events.size()); ++e) {
+        const DamageEvent& ev = s.events[e];
+        if (!ev.active) continue;
+        StrokeEvent se{e, ev.kind, ev.edge, 0.0, 0.0};
+        if (ev.kind == EventKind::Hinge) se.hingeRest = s.springs.rest[ev.springs[0]];
+        if (ev.kind == EventKind::Break) se.creaseRest = s.springs.rest[ev.edge];
+        stroke.events.push_back(se);
+    }
+}
+
+void EditSession::keepSettlingWithLastStroke() {
+    if (strokes_.empty()) return;
+    Stroke& last = strokes_.back();
+    if (!last.applied || last.sheet != sheet_ || last.worldAfter || last.after.x.empty()) return;
+    appendEvents(last, last.endEvent);
+    last.endEvent = static_cast<Index>(sim_.world().sheet.events.size());
+    last.after = look();
+}
+
 EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke, StrokeKind kind) {
     stroke.sheet = sheet_;
+    stroke.endEvent = static_cast<Index>(sim_.world().sheet.events.size());
+    stroke.applied = true;
     strokes_.push_back(std::move(stroke));
     if (strokes_.size() > kStrokesWithLook) {
         Stroke& old = strokes_[strokes_.size() - 1 - kStrokesWithLook];
@@ -410,6 +440,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     setPins(st.pinChanged, !st.pinnedTo);
     sim_.sheetEdited();
     setSettle(Settle::None);
+    strokes_[static_cast<std::size_t>(stroke)].applied = false;
     // A stroke that began on a settled sheet gives it back settled.
     if (all && restore(st.before) && st.frozenBefore && !pressed_) freeze();
     if (pressed_) beginStroke(); // a stroke under way goes on from what undo left
@@ -458,6 +489,8 @@ std::optional<int> EditSession::redoStroke(int stroke) {
     setPins(st.pinChanged, st.pinnedTo);
     sim_.sheetEdited();
     setSettle(Settle::None);
+    st.endEvent = static_cast<Index>(s.events.size());
+    st.applied = true;
     const bool restored = reapplied == static_cast<int>(st.events.size()) && restore(st.after);
     if (st.settle && restored && !pressed_) freeze();
     if (pressed_) beginStroke();
@@ -481,6 +514,8 @@ StepStatus EditSession::advance(int steps) {
         const StepStatus status = settle_ == Settle::Settling ? settleStep() : sim_.step();
         if (status != StepStatus::Ok) {
             record(EditCommand::of(EditCommand::Kind::Diverged));
+            // The carry is what blew up, maybe: let the flap go rather than carry it on.
+            if (folding()) finishFold();
             return status;
         }
         if (folding() && w.time >= foldRelease_) finishFold();
@@ -500,6 +535,7 @@ void EditSession::settle() {
     record(EditCommand::of(EditCommand::Kind::Settle));
     // Not under a held tool: the stroke would go on through paper that cannot break.
     if (settle_ != Settle::None || busy()) return;
+    keepSettlingWithLastStroke();
     setSettle(Settle::Settling);
     settleStart_ = sim_.world().stepCount;
     settleLook_ = look();
@@ -542,6 +578,12 @@ std::optional<EditSession::StrokeEnd> EditSession::takeFinished() {
 }
 
 FoldRefusal EditSession::fold(const FoldRequest& request) {
+    // What a recording could not hold again (a line drawn toward the horizon) changes
+    // nothing, so it is refused before it is recorded.
+    auto near = [](const Vec3& p, double limit) { return p.allFinite() && p.norm() <= limit; };
+    if (!near(request.from, kDivergenceRadius) || !near(request.to, kDivergenceRadius) ||
+        !near(request.viewer, 10.0))
+        return FoldRefusal::OffSheet;
     EditCommand c = EditCommand::of(EditCommand::Kind::Fold);
     c.fold = std::make_shared<const FoldRequest>(request);
     record(std::move(c));
@@ -557,9 +599,29 @@ FoldRefusal EditSession::fold(const FoldRequest& request) {
     return FoldRefusal::None;
 }
 
+void EditSession::adoptFoldUnderWay() {
+    // A sheet saved in the middle of a fold (or a scene that folds) goes on folding: the
+    // groups still to be let go are the fold under way, one undo step when let go.
+    const World& w = sim_.world();
+    const auto& groups = w.script.pins;
+    foldGroup_ = kNoFold;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        if (!std::isfinite(groups[g].release) || groups[g].release <= w.time) continue;
+        if (foldGroup_ == kNoFold) foldGroup_ = g;
+        foldRelease_ =
+            foldGroup_ == g ? groups[g].release : std::max(foldRelease_, groups[g].release);
+    }
+    if (folding()) beginStroke();
+}
+
 void EditSession::finishFold() {
-    // applyScript has let the flap go; the group has nothing more to do.
+    // applyScript has let the flap go (unless a step failed first); the groups have
+    // nothing more to do.
     auto& groups = sim_.world().script.pins;
+    for (std::size_t g = foldGroup_; g < groups.size(); ++g)
+        for (Index i : groups[g].vertices)
+            if (i >= 0 && i < sim_.world().sheet.verts.size())
+                sim_.world().sheet.verts.pinned[i] = 0;
     if (foldGroup_ < groups.size())
         groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(foldGroup_), groups.end());
     foldGroup_ = kNoFold;

@@ -112,10 +112,11 @@ class EditSession {
     Index grabbedVertex() const { return grabbed_; }
     // Pin: toggles the vertices around `point` — when the vertex nearest to it (within
     // `radius`) is free, the free vertices within `radius` of the point are pinned; when
-    // it is pinned, its pinned patch (pinned vertices within `radius` of one another) is
-    // freed. Pinned vertices stand still and are saved
+    // it is pinned, its pinned patch (pinned vertices joined by springs, within
+    // kPinPatchReach radii of the point) is freed. Pinned vertices stand still and are saved
     // with the sheet. An undo step; nothing when no vertex is that close.
     std::optional<StrokeEnd> pin(const Vec3& point, double radius);
+    static constexpr double kPinPatchReach = 3.0;
 
     // Reset: the sheet starts again from `world` (the scene as New makes it) as an undo
     // step, unlike New and Open: undo gives back the sheet as it was, with the strokes
@@ -194,6 +195,10 @@ class EditSession {
         MeshSize pressedOn;   // redo only onto the mesh the stroke began on
         std::vector<StrokeEvent> events;
         SheetLook before, after;
+        // The damage log's length when it ended, and whether it is done (not undone):
+        // what the sheet breaks settling after it, until the next edit, is its own too.
+        Index endEvent = 0;
+        bool applied = true;
         bool settle = false;       // a Settle: redo freezes the sheet again
         bool frozenBefore = false; // began on a settled sheet: undo freezes it again
         // A pin: these vertices were set to `pinnedTo` (undo sets them back).
@@ -211,6 +216,12 @@ class EditSession {
     // Gives back `look` if the sheet has the same vertices again; false otherwise.
     bool restore(const SheetLook& look);
     std::optional<StrokeEnd> endStroke(StrokeKind kind);
+    // Adds the active damage events from `from` on to `stroke`, with their rest lengths.
+    void appendEvents(Stroke& stroke, Index from) const;
+    // When the next edit begins: the damage the sheet made settling since the newest
+    // stroke ended, and the sheet as it is now, become that stroke's, so that its redo
+    // gives back the sheet the next edit began on (whose redo needs that mesh).
+    void keepSettlingWithLastStroke();
     // Fills in `stroke`'s start (from beginStroke) and its sheet before and after.
     void closeStroke(Stroke& stroke);
     // The way from `from` toward `to` that one step allows at kMaxToolSpeed.
@@ -255,8 +266,10 @@ class EditSession {
     static constexpr std::size_t kNoFold = static_cast<std::size_t>(-1);
     std::size_t foldGroup_ = kNoFold;
     double foldRelease_ = 0.0;
-    // Ends the fold under way once its flap is let go: an undo step.
+    // Ends the fold under way once its flap is let go (or a step failed): an undo step.
     void finishFold();
+    // Takes a sheet's pin groups still to be let go as the fold under way.
+    void adoptFoldUnderWay();
     // Another edit must wait: a push or a grab is held, or a fold is under way.
     bool busy() const { return pressed_ || grabbing() || folding(); }
     EditLog log_; // endStep is filled in by log()

@@ -15,7 +15,7 @@ namespace {
 constexpr double kDeskTolerance = 0.001; // m
 // The carry is checked against the desk at this many angles along the way.
 constexpr int kDeskChecks = 32;
-// The paper's facing along the line is the mean of its normals this close to the line.
+// The paper's plane along the line is read from its normals this close to the segment.
 constexpr double kFacingReach = 0.02; // m
 
 } // namespace

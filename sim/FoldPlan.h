@@ -13,8 +13,9 @@ namespace pf {
 // held there so that the crease is pressed, opened back to `angle` and let go, as a
 // hand folds paper: a crease that was never pressed flat springs open. Where the flap
 // would pass through the desk (a mountain fold of paper lying face up), the sheet is
-// lifted off it first and put down again once folded. The line stands for the whole
-// straight line through its two points, as on paper. Nothing is rotated rigidly into
+// lifted off it first and put down again once folded. The paper must lie within 2 cm of
+// the segment drawn; the fold is then along the whole straight line through it, as on
+// paper. Nothing is rotated rigidly into
 // place: the flap is carried as a hand carries it, and the crease forms in the band
 // along the line, where the paper bends, through the model's own breaks and hinges
 // (docs/model.md, "The Fold tool").

@@ -560,6 +560,10 @@
         <source>Not folded: this way the flap would go through the desk, and pins hold the paper down. Fold the other way (Valley or Mountain), or unpin the paper.</source>
         <translation>Nicht gefaltet: So ginge die Lasche durch den Tisch, und angeheftete Stellen halten das Papier fest. Falten Sie andersherum (Tal oder Berg) oder lösen Sie die Anheftung.</translation>
     </message>
+    <message>
+        <source>Not now: a fold is under way.</source>
+        <translation>Nicht jetzt: Eine Faltung läuft noch.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

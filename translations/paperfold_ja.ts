@@ -555,6 +555,10 @@
         <source>Not folded: this way the flap would go through the desk, and pins hold the paper down. Fold the other way (Valley or Mountain), or unpin the paper.</source>
         <translation>折れません：この向きでは折り返しが机を突き抜け、ピンが紙を押さえているため持ち上げられません。反対向き（谷折りまたは山折り）に折るか、ピンを外してください。</translation>
     </message>
+    <message>
+        <source>Not now: a fold is under way.</source>
+        <translation>今はできません：折りの途中です。</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

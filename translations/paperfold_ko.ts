@@ -555,6 +555,10 @@
         <source>Not folded: this way the flap would go through the desk, and pins hold the paper down. Fold the other way (Valley or Mountain), or unpin the paper.</source>
         <translation>접지 않음: 이 방향이면 접히는 부분이 책상을 뚫고 지나가는데, 고정점이 종이를 붙잡고 있어 들어 올릴 수 없습니다. 반대로 접거나 (골접기 또는 산접기) 고정을 푸세요.</translation>
     </message>
+    <message>
+        <source>Not now: a fold is under way.</source>
+        <translation>지금은 할 수 없습니다: 접는 중입니다.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -164,7 +164,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     connect(sim_.get(), &SimulationThread::foldAnswered, this, [this](int refusal) {
         statusBar()->showMessage(foldAnswerText(static_cast<FoldRefusal>(refusal)), 8000);
+        if (refusal == int(FoldRefusal::None)) setFoldUnderWay(true);
     });
+    // The stack enables its own actions whenever it moves (a parameter change, say).
+    connect(undo_, &QUndoStack::indexChanged, this, [this] { gateUndo(); });
     // An undo or redo lets go of a held grab (EditSession); the hand follows.
     connect(sim_.get(), &SimulationThread::strokeUndone, input_, &ViewportInput::letGo);
     connect(sim_.get(), &SimulationThread::strokeRedone, input_, &ViewportInput::letGo);
@@ -295,6 +298,10 @@ void MainWindow::createActions() {
             });
     connect(make("settle", QKeySequence(tr("Ctrl+K"))), &QAction::triggered, this, [this] {
         if (input_->toolPressed()) return; // not in the middle of a push
+        if (foldUnderWay_) {
+            statusBar()->showMessage(tr("Not now: a fold is under way."), 5000);
+            return;
+        }
         sim_->settle();
         statusBar()->showMessage(playing_ ? tr("Settling: the sheet comes to rest…")
                                           : tr("Settling once the simulation plays (Space)."));
@@ -303,6 +310,10 @@ void MainWindow::createActions() {
             &QAction::triggered, this, [this] {
                 // An undo step, so nothing to ask: Edit ▸ Undo gives the sheet back.
                 if (input_->toolPressed()) return; // not in the middle of a push
+                if (foldUnderWay_) {
+                    statusBar()->showMessage(tr("Not now: a fold is under way."), 5000);
+                    return;
+                }
                 input_->letGo();
                 sim_->reset(sceneWorldWithParams(scene_));
             });
@@ -481,14 +492,21 @@ void MainWindow::onSnapshot() {
     lastHash_ = st.sheetHash;
     readout_->show(st);
     solver_->showStatus(st);
-    // While a fold is carried round, the sheet is the fold's: undo and redo wait for it.
-    if (st.folding != foldUnderWay_) {
-        foldUnderWay_ = st.folding;
-        undoView_->setEnabled(!st.folding);
-    }
-    action("undo")->setEnabled(!st.folding && undo_->canUndo());
-    action("redo")->setEnabled(!st.folding && undo_->canRedo());
+    setFoldUnderWay(st.folding);
     updateTitle();
+}
+
+void MainWindow::setFoldUnderWay(bool folding) {
+    foldUnderWay_ = folding;
+    gateUndo();
+}
+
+void MainWindow::gateUndo() {
+    // While a fold is carried round, the sheet is the fold's: the session refuses undo
+    // and redo, so the history must not move either.
+    undoView_->setEnabled(!foldUnderWay_);
+    action("undo")->setEnabled(!foldUnderWay_ && undo_->canUndo());
+    action("redo")->setEnabled(!foldUnderWay_ && undo_->canRedo());
 }
 
 QString MainWindow::foldAnswerText(FoldRefusal refusal) {

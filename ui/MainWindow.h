@@ -121,6 +121,9 @@ class MainWindow : public QMainWindow {
 
     QString scene_ = QStringLiteral("press");
     bool foldUnderWay_ = false;
+    void setFoldUnderWay(bool folding);
+    // Undo, Redo and the history enabled as the stack allows, unless a fold is under way.
+    void gateUndo();
     // What the status bar says to a fold: that it began, or why it was refused.
     static QString foldAnswerText(FoldRefusal refusal);
     QString file_;
