@@ -312,6 +312,7 @@ EditSession::MeshSize EditSession::meshSize() const {
 
 void EditSession::beginStroke() {
     keepSettlingWithLastStroke();
+    settledSince_ = kNone;
     pressedFrozen_ = settle_ == Settle::Frozen;
     setSettle(Settle::None);
     strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
@@ -359,9 +360,13 @@ void EditSession::appendEvents(Stroke& stroke, Index from) const {
 }
 
 void EditSession::keepSettlingWithLastStroke() {
-    if (strokes_.empty()) return;
-    Stroke& last = strokes_.back();
-    if (!last.applied || last.sheet != sheet_ || last.worldAfter || last.after.x.empty()) return;
+    // The newest step that is done: later ones were undone, and are gone once an edit
+    // begins.
+    auto done = std::find_if(strokes_.rbegin(), strokes_.rend(),
+                             [](const Stroke& st) { return st.applied; });
+    if (done == strokes_.rend()) return;
+    Stroke& last = *done;
+    if (last.sheet != sheet_ || last.worldAfter || last.after.x.empty()) return;
     appendEvents(last, last.endEvent);
     last.endEvent = static_cast<Index>(sim_.world().sheet.events.size());
     last.after = look();
@@ -371,6 +376,7 @@ EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke, StrokeKind kind) {
     stroke.sheet = sheet_;
     stroke.endEvent = static_cast<Index>(sim_.world().sheet.events.size());
     stroke.applied = true;
+    settledSince_ = kNone;
     strokes_.push_back(std::move(stroke));
     if (strokes_.size() > kStrokesWithLook) {
         Stroke& old = strokes_[strokes_.size() - 1 - kStrokesWithLook];
@@ -413,6 +419,7 @@ void EditSession::swapSheet(const World& world, int sheet) {
     w.stepCount = step;
     w.time = time;
     sheet_ = sheet;
+    settledSince_ = kNone;
 }
 
 std::optional<int> EditSession::undoStroke(int stroke) {
@@ -424,6 +431,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     if (st.worldAfter) { // a Reset
         if (sheet_ != st.sheetAfter || pressed_) return std::nullopt;
         swapSheet(*st.worldBefore, st.sheetBefore);
+        strokes_[static_cast<std::size_t>(stroke)].applied = false;
         return 0;
     }
     if (st.sheet != sheet_) return std::nullopt; // made on a sheet a Reset replaced
@@ -441,6 +449,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     sim_.sheetEdited();
     setSettle(Settle::None);
     strokes_[static_cast<std::size_t>(stroke)].applied = false;
+    settledSince_ = static_cast<Index>(s.events.size());
     // A stroke that began on a settled sheet gives it back settled.
     if (all && restore(st.before) && st.frozenBefore && !pressed_) freeze();
     if (pressed_) beginStroke(); // a stroke under way goes on from what undo left
@@ -458,6 +467,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         releaseGrab();
         reset.worldBefore = std::make_shared<const World>(sim_.world());
         swapSheet(*reset.worldAfter, reset.sheetAfter);
+        reset.applied = true;
         return 0;
     }
     if (strokes_[static_cast<std::size_t>(stroke)].sheet != sheet_) return std::nullopt;
@@ -465,8 +475,15 @@ std::optional<int> EditSession::redoStroke(int stroke) {
     World& w = sim_.world();
     Sheet& s = w.sheet;
     Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
-    // Edge ids are the stroke's only on the mesh it began on: anything else (damage made
-    // since the undo, another stroke still applied) would break other edges.
+    // What the sheet broke settling since the last undo or redo goes: the redo gives
+    // back the sheet as the next edit found it, and its edge ids are those of the mesh
+    // the stroke began on, which that damage changed (the editor plays on between the
+    // clicks of several redos).
+    if (settledSince_ != kNone)
+        for (Index e = static_cast<Index>(s.events.size()) - 1; e >= settledSince_; --e)
+            if (s.events[e].active) recoverEvent(s, e);
+    // Edge ids are the stroke's only on the mesh it began on: anything else (another
+    // stroke still applied) would break other edges.
     if (!(meshSize() == st.pressedOn) || s.events.size() + st.events.size() > kMaxDamageEvents)
         return 0;
     st.firstEvent = static_cast<Index>(s.events.size());
@@ -491,6 +508,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
     setSettle(Settle::None);
     st.endEvent = static_cast<Index>(s.events.size());
     st.applied = true;
+    settledSince_ = st.endEvent;
     const bool restored = reapplied == static_cast<int>(st.events.size()) && restore(st.after);
     if (st.settle && restored && !pressed_) freeze();
     if (pressed_) beginStroke();

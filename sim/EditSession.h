@@ -261,6 +261,9 @@ class EditSession {
     std::int64_t settleStart_ = 0;
     SheetLook settleLook_; // the sheet when Settle was chosen
     std::optional<StrokeEnd> finished_;
+    // The damage log's length after the last undo or redo (kNone once an edit began):
+    // what lies beyond is the sheet settling since, which a redo takes back first.
+    Index settledSince_ = kNone;
     // The fold under way: its first pin group in the world's script (the rest follow it
     // to the end), and when it is let go.
     static constexpr std::size_t kNoFold = static_cast<std::size_t>(-1);
