@@ -974,6 +974,8 @@ class TestEditor : public QObject {
         window->action("settle")->trigger();
         const int steps = int(std::lround(EditSession::kSettleSeconds * 240)) + 10;
         for (int k = 0; k < steps; ++k) window->simulation()->stepOnce();
+        // Every step applied first: under a sanitizer they take longer than the wait.
+        window->simulation()->sync();
         QVERIFY(waitForCount(settled, 1));
         QTRY_COMPARE(window->undoStack()->count(), 1);
         QCOMPARE(window->undoStack()->undoText(), QStringLiteral("Settle"));

@@ -66,9 +66,9 @@ class TestFoldTool : public QObject {
         const double took = 0.75 + runUntilLetGo(s);
         const double letGo = foldAngle(s.world().sheet, length());
         const auto ended = s.takeFinished();
-        advanceSeconds(s, 5.0);
+        advanceSeconds(s, 2.0);
         const double later = foldAngle(s.world().sheet, length());
-        qInfo("half way %.1f deg, let go after %.2f s at %.1f deg, 5 s later %.1f deg; %d breaks "
+        qInfo("half way %.1f deg, let go after %.2f s at %.1f deg, 2 s later %.1f deg; %d breaks "
               "and hinges in the fold",
               halfWay, took, letGo, later, ended ? ended->events : -1);
         QVERIFY(halfWay > 60.0 && halfWay < 120.0);
@@ -84,7 +84,9 @@ class TestFoldTool : public QObject {
     }
 
     void withoutBreaksAndHingesTheSheetSpringsBackFlat() {
-        // The same carry without the crease model: nothing keeps the fold.
+        // The same carry without the crease model: nothing keeps the fold. Physics only,
+        // no code path the other cases miss: left to the Release build (CI time).
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
         EditSession s = editorSession(false);
         QCOMPARE(s.fold(acrossTheMiddle()), FoldRefusal::None);
         runUntilLetGo(s);
@@ -97,7 +99,8 @@ class TestFoldTool : public QObject {
 
     void aPartialFoldIsHeldAtItsAngle() {
         // Pressed flat first (an unpressed crease springs open), then opened back to the
-        // angle and held there until it is let go.
+        // angle and held there until it is let go. Physics only (CI time, as above).
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
         EditSession s = editorSession();
         QCOMPARE(s.fold(acrossTheMiddle(kPi / 2)), FoldRefusal::None);
         const double release = s.world().script.pins.back().release;
@@ -155,9 +158,9 @@ class TestFoldTool : public QObject {
         advanceSeconds(s, kFoldLiftSeconds);
         const double lifted = std::min(meanHeight(flap), meanHeight(rest));
         const double took = kFoldLiftSeconds + runUntilLetGo(s);
-        advanceSeconds(s, 5.0);
+        advanceSeconds(s, 2.0);
         const double angle = foldAngle(s.world().sheet, length());
-        qInfo("mountain fold on the desk: lifted %.3f m, let go after %.2f s; 5 s later %.1f deg, "
+        qInfo("mountain fold on the desk: lifted %.3f m, let go after %.2f s; 2 s later %.1f deg, "
               "flap at %.4f m under the rest at %.4f m",
               lifted, took, angle, meanHeight(flap), meanHeight(rest));
         QVERIFY(lifted > 0.1); // clear of the desk for the flap to pass under
