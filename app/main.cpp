@@ -1,5 +1,6 @@
 #include "BenchCommand.h"
 #include "CommandLine.h"
+#include "CrumpleCommand.h"
 #include "EditorMain.h"
 #include "ExportCommand.h"
 #include "FidelityCommand.h"
@@ -33,6 +34,7 @@ void printUsage(QTextStream& out) {
            "  stability  map where each integrator fails (CSV and heat maps)\n"
            "  fidelity   check the sheet against physics (stretch, free fall, cantilever...)\n"
            "  figures    the paper's Fig. 10-12 as contact sheets with the counts (PNG, CSV)\n"
+           "  crumple    crumple and flatten a sheet 10 times: crease length per cycle (CSV, PNG)\n"
            "  bench      speed against accuracy of every integrator configuration (CSV, chart)\n"
            "\n"
            "paperfold <command> --help lists a command's options. The editor needs a\n"
@@ -61,7 +63,7 @@ int main(int argc, char* argv[]) {
     // offscreen platform gives one with no display at all.
     const std::string_view command = argc >= 2 ? argv[1] : "";
     const bool gui = command == "render" || command == "replay" || command == "stability" ||
-                     command == "bench" || command == "figures";
+                     command == "bench" || command == "figures" || command == "crumple";
     if (gui && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     if (gui && qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
@@ -92,6 +94,7 @@ int main(int argc, char* argv[]) {
         if (args[1] == QLatin1String("bench")) return pf::cli::runBench(args);
         if (args[1] == QLatin1String("fidelity")) return pf::cli::runFidelity(args);
         if (args[1] == QLatin1String("figures")) return pf::cli::runFigures(args);
+        if (args[1] == QLatin1String("crumple")) return pf::cli::runCrumple(args);
         throw pf::cli::UsageError{QStringLiteral("unknown command '%1'").arg(args[1])};
     } catch (const pf::cli::UsageError& e) {
         err << "paperfold: " << e.message << '\n';

@@ -1,5 +1,8 @@
 #include "SceneScript.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace pf {
 
 Vec3 spherePathAt(const std::vector<SphereKey>& keys, double t) {
@@ -28,7 +31,13 @@ void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, Sp
             for (Index i : g.vertices) V.pinned[i] = 0;
             continue;
         }
-        if (t < g.start) continue;
+        if (t < g.start) {
+            // A draw that begins inside this step moves for the part of the step after its
+            // start, so that it scales by exactly e^(rate (until - start)) whatever the
+            // step; drawing in and letting out again then brings the vertices back where
+            // they were (two draws of the same vertices must not share a step).
+            if (g.scaleRate == 0.0 || t + h <= g.start) continue;
+        }
         const bool moving = t < g.until;
         // The exact chord of the turn over the step, so that positions stay on their
         // circles (integrated as x += h v) instead of spiralling outward.
@@ -41,9 +50,12 @@ void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, Sp
                 continue;
             }
             V.v[i] = g.velocity;
-            if (g.turnRate == 0.0) continue;
             const Vec3 arm = V.x[i] - g.pivot;
-            V.v[i] += (turn * arm - arm) / h;
+            if (g.turnRate != 0.0) V.v[i] += (turn * arm - arm) / h;
+            if (g.scaleRate != 0.0) {
+                const double span = std::min(t + h, g.until) - std::max(t, g.start);
+                V.v[i] += std::expm1(g.scaleRate * span) / h * arm;
+            }
         }
     }
 }

@@ -15,9 +15,10 @@ struct SphereKey {
 };
 
 // Pinned vertices that move from a time until a time, then stand still: at a constant
-// velocity, turning at a constant rate about an axis, or both; optionally let go at a
-// time. Before its start a group leaves its vertices to whatever moves them (another
-// group of the same vertices, say: one motion after another).
+// velocity, turning at a constant rate about an axis, drawn toward or away from a point,
+// or any of these together; optionally let go at a time. Before its start a group leaves its
+// vertices to whatever moves them (another group of the same vertices, say: one motion after
+// another).
 struct PinGroup {
     std::vector<Index> vertices;
     Vec3 velocity = Vec3::Zero();
@@ -26,6 +27,9 @@ struct PinGroup {
     Vec3 pivot = Vec3::Zero();
     Vec3 axis = Vec3::UnitX();
     double turnRate = 0.0;
+    // Drawn toward `pivot` (negative) or away from it, as a hand gathers paper in: the
+    // offset from the pivot scales by e^(scaleRate t), in 1/s; 0: no scaling.
+    double scaleRate = 0.0;
     double start = -std::numeric_limits<double>::infinity();
     double until = 0.0;
     // The step that reaches this time unpins the group's vertices; infinity: never.

@@ -1,5 +1,6 @@
 #include "Scenes.h"
 
+#include "Rng.h"
 #include "SheetBuilder.h"
 
 #include <cmath>
@@ -113,6 +114,45 @@ World foldScene(const SceneOptions& options) {
     return w;
 }
 
+World crumpleCyclesScene(const SceneOptions& options) {
+    World w = baseWorld("crumple-cycles", options, 0.0);
+    const SheetSpec spec = sceneSpec(options);
+    // A faint dome seeds the first buckling upward, off the desk.
+    std::vector<Index> rim;
+    for (int r = 0; r < spec.rows; ++r)
+        for (int c = 0; c < spec.columns; ++c) {
+            const Index i = vertexAt(spec, c, r);
+            w.sheet.verts.x[i].y() = 0.002 * std::sin(std::numbers::pi * r / (spec.rows - 1)) *
+                                     std::sin(std::numbers::pi * c / (spec.columns - 1));
+            if (r == 0 || c == 0 || r == spec.rows - 1 || c == spec.columns - 1) rim.push_back(i);
+        }
+    for (Index i : rim) w.sheet.verts.pinned[i] = 1;
+    // Each cycle gathers the rim toward a point of the middle half of the sheet, a new
+    // one each cycle as hands never crumple twice alike, to kCrumpleFraction of its
+    // size; holds it; pulls it out flat again and holds it there. The points are the
+    // scene's own draws, so the world's generator (the breaks') is the seed's as in
+    // every scene.
+    Rng centres(options.seed ^ 0x9e3779b97f4a7c15ULL);
+    const double rate = std::log(kCrumpleFraction) / kCrumpleGather;
+    for (int k = 0; k < kCrumpleCycles; ++k) {
+        const double begin = k * kCrumpleCycleSeconds;
+        PinGroup gather;
+        gather.vertices = rim;
+        gather.pivot = Vec3((centres.uniform() - 0.5) * 0.5 * options.width, 0.0,
+                            (centres.uniform() - 0.5) * 0.5 * options.length);
+        gather.scaleRate = rate;
+        gather.start = begin;
+        gather.until = begin + kCrumpleGather;
+        PinGroup pull = gather;
+        pull.scaleRate = -rate;
+        pull.start = gather.until + kCrumpleSqueeze;
+        pull.until = pull.start + kCrumpleGather;
+        w.script.pins.push_back(std::move(gather));
+        w.script.pins.push_back(std::move(pull));
+    }
+    return w;
+}
+
 World dropScene(const SceneOptions& options) {
     World w = baseWorld("drop", options, 0.0);
     // Tilted 45° about x, its lower edge 4.5 cm above the ground: springs lie along
@@ -140,7 +180,8 @@ void setMaterial(World& world, const Material& material) {
 }
 
 const std::vector<std::string>& sceneNames() {
-    static const std::vector<std::string> names{"press", "drape", "compress", "drop", "fold"};
+    static const std::vector<std::string> names{"press", "drape", "compress",
+                                                "drop",  "fold",  "crumple-cycles"};
     return names;
 }
 
@@ -155,6 +196,7 @@ std::optional<World> makeScene(std::string_view name, const SceneOptions& option
     if (name == "compress") return compressScene(options);
     if (name == "drop") return dropScene(options);
     if (name == "fold") return foldScene(options);
+    if (name == "crumple-cycles") return crumpleCyclesScene(options);
     return std::nullopt;
 }
 

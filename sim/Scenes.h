@@ -27,6 +27,9 @@ inline constexpr double kMaxSheetSide = 2.0;
 //   drop     a sheet tilted 45° falls onto the ground
 //   fold     one short edge is turned over onto the other, the fold pressed by the sphere
 //            and let go: whether the crease holds the fold
+//   crumple-cycles  the rim gathered in to half the sheet's size and pulled out flat
+//            again, kCrumpleCycles times: crease length against cycles (Gottesman et al.
+//            2018), measured by CrumpleCycles.h
 // Pins and arches follow the sheet's size. Returns nullopt for an unknown name, a
 // resolution outside [kMinResolution, kMaxResolution] or a side outside the limits.
 std::optional<World> makeScene(std::string_view name, const SceneOptions& options = {});
@@ -40,6 +43,15 @@ const std::vector<std::string>& sceneNames();
 // Makes the world's sheet of `material`: sets it in the parameters and scales the
 // masses to its areal density.
 void setMaterial(World& world, const Material& material);
+
+// The crumple-cycles scene: each cycle gathers the rim in for kCrumpleGather seconds to
+// kCrumpleFraction of its size, holds it kCrumpleSqueeze, pulls it out flat as long and
+// holds it flat until the cycle's kCrumpleCycleSeconds are up.
+inline constexpr int kCrumpleCycles = 10;
+inline constexpr double kCrumpleCycleSeconds = 3.0;
+inline constexpr double kCrumpleGather = 1.0;
+inline constexpr double kCrumpleSqueeze = 0.25;
+inline constexpr double kCrumpleFraction = 0.5;
 
 inline constexpr int kMinResolution = 3;
 inline constexpr int kMaxResolution = 200;

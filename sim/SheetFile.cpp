@@ -547,16 +547,22 @@ World worldFromCbor(const QCborMap& root) {
         group.velocity = uvel.vec3();
         if (!group.velocity.allFinite()) fail(QStringLiteral("script.pins.velocity: not finite"));
         group.until = realAt(gm, "until", wsc, -1e12, 1e12);
-        // Turning and letting go came later: a group without them only translates.
-        if (gm.contains(QLatin1String("turnRate"))) {
+        // Turning, scaling and letting go came later: a group without them only translates.
+        const bool turns = gm.contains(QLatin1String("turnRate"));
+        const bool scales = gm.contains(QLatin1String("scaleRate"));
+        if (turns) {
             group.turnRate = realAt(gm, "turnRate", wsc, -1e3, 1e3);
-            Unpacker up(bytesAt(gm, "pivot", wsc, 1, 24)), ua(bytesAt(gm, "axis", wsc, 1, 24));
-            group.pivot = up.vec3();
+            Unpacker ua(bytesAt(gm, "axis", wsc, 1, 24));
             group.axis = ua.vec3();
-            if (!group.pivot.allFinite() || group.pivot.cwiseAbs().maxCoeff() > 1e4)
-                fail(QStringLiteral("script.pins.pivot: not a point within 10 km"));
             if (!(std::abs(group.axis.norm() - 1.0) < 1e-9))
                 fail(QStringLiteral("script.pins.axis: not a unit vector"));
+        }
+        if (scales) group.scaleRate = realAt(gm, "scaleRate", wsc, -100.0, 100.0);
+        if (turns || scales) {
+            Unpacker up(bytesAt(gm, "pivot", wsc, 1, 24));
+            group.pivot = up.vec3();
+            if (!group.pivot.allFinite() || group.pivot.cwiseAbs().maxCoeff() > 1e4)
+                fail(QStringLiteral("script.pins.pivot: not a point within 10 km"));
         }
         if (gm.contains(QLatin1String("release")))
             group.release = realAt(gm, "release", wsc, -1e12, 1e12);
@@ -625,6 +631,7 @@ const CborBounds& sheetFileBounds() {
                                 "vertices",
                                 "until",
                                 "turnRate",
+                                "scaleRate",
                                 "pivot",
                                 "axis",
                                 "release",
@@ -715,12 +722,16 @@ QByteArray encodeWorld(const World& world) {
         gm[QLatin1String("velocity")] = vel;
         gm[QLatin1String("until")] = g.until;
         if (g.turnRate != 0.0) {
-            QByteArray pivot, axis;
-            putVec3(pivot, g.pivot);
+            QByteArray axis;
             putVec3(axis, g.axis);
             gm[QLatin1String("turnRate")] = g.turnRate;
-            gm[QLatin1String("pivot")] = pivot;
             gm[QLatin1String("axis")] = axis;
+        }
+        if (g.scaleRate != 0.0) gm[QLatin1String("scaleRate")] = g.scaleRate;
+        if (g.turnRate != 0.0 || g.scaleRate != 0.0) {
+            QByteArray pivot;
+            putVec3(pivot, g.pivot);
+            gm[QLatin1String("pivot")] = pivot;
         }
         if (std::isfinite(g.release)) gm[QLatin1String("release")] = g.release;
         if (std::isfinite(g.start)) gm[QLatin1String("start")] = g.start;

@@ -14,6 +14,7 @@
 #include <QtTest>
 #include <bit>
 #include <cstring>
+#include <functional>
 
 using namespace pf;
 
@@ -283,6 +284,45 @@ class TestSheetFile : public QObject {
         const WorldLoad bad = decodeWorld(QCborValue(root).toCbor());
         QVERIFY(!bad.world);
         QVERIFY2(bad.error.contains(QStringLiteral("axis")), qPrintable(bad.error));
+    }
+
+    // The crumple-cycles rim is drawn in toward a point and out again: saved mid-draw, the
+    // sheet resumes bit for bit into the next cycle; a draw without its point, or at an
+    // absurd rate, is refused.
+    void aDrawingPinGroupResumesExactly() {
+        Simulation whole(*makeScene("crumple-cycles"));
+        for (int k = 0; k < 150; ++k) QCOMPARE(whole.step(), StepStatus::Ok);
+        const QByteArray saved = encodeWorld(whole.world());
+        WorldLoad l = decodeWorld(saved);
+        QVERIFY2(l.world, qPrintable(l.error));
+        const PinGroup& g = l.world->script.pins.front();
+        QCOMPARE(g.scaleRate, whole.world().script.pins.front().scaleRate);
+        QCOMPARE(g.pivot, whole.world().script.pins.front().pivot);
+        QVERIFY(g.scaleRate < 0.0);
+        Simulation resumed(std::move(*l.world));
+        while (whole.world().time < kCrumpleCycleSeconds + 0.5) {
+            QCOMPARE(whole.step(), StepStatus::Ok);
+            QCOMPARE(resumed.step(), StepStatus::Ok);
+        }
+        QCOMPARE(encodeWorld(resumed.world()), encodeWorld(whole.world()));
+
+        const auto withGroup = [&](const std::function<void(QCborMap&)>& change) {
+            QCborMap root = QCborValue::fromCbor(saved).toMap();
+            QCborMap script = root[QLatin1String("script")].toMap();
+            QCborArray pins = script[QLatin1String("pins")].toArray();
+            QCborMap group = pins.at(0).toMap();
+            change(group);
+            pins[0] = group;
+            script[QLatin1String("pins")] = pins;
+            root[QLatin1String("script")] = script;
+            return decodeWorld(QCborValue(root).toCbor());
+        };
+        const WorldLoad noPivot = withGroup([](QCborMap& g) { g.remove(QLatin1String("pivot")); });
+        QVERIFY(!noPivot.world);
+        QVERIFY2(noPivot.error.contains(QStringLiteral("pivot")), qPrintable(noPivot.error));
+        const WorldLoad fast = withGroup([](QCborMap& g) { g[QLatin1String("scaleRate")] = 1e6; });
+        QVERIFY(!fast.world);
+        QVERIFY2(fast.error.contains(QStringLiteral("scaleRate")), qPrintable(fast.error));
     }
 
     void resumeIsExact() {

@@ -11,6 +11,7 @@
 #include <QJsonObject>
 #include <QMap>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -76,6 +77,48 @@ class TestSimulateCli : public QObject {
             if (f[3] == QLatin1String("0")) breaksAtPhi0 += f[5].toLong();
         }
         QVERIFY(breaksAtPhi0 > 0);
+    }
+
+    // Crumpled and flattened twice: a row per cycle whose crease length grows and matches
+    // the printed table, a histogram that counts every crease run, and a map per cycle.
+    void crumpleWritesCreaseLengthPerCycle() {
+        QTemporaryDir dir;
+        const Result r = runPaperfold({"crumple", "--output-dir", dir.path(), "--cycles", "2"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY(r.out.contains("fit: L(n) = "));
+        QFile csv(dir.filePath(QStringLiteral("crumple_cycles.csv")));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QStringList lines =
+            QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 3);
+        QCOMPARE(lines[0], QStringLiteral("cycle,vertices,breaks,crease_length_m,fit_m"));
+        const QStringList one = lines[1].split(QLatin1Char(',')),
+                          two = lines[2].split(QLatin1Char(','));
+        QVERIFY(one[3].toDouble() > 0.0);
+        QVERIFY(two[3].toDouble() > one[3].toDouble());
+        QVERIFY(two[2].toLong() > one[2].toLong());
+        // Two points: the fit passes through both.
+        QVERIFY(std::abs(two[4].toDouble() - two[3].toDouble()) < 1e-9);
+        QVERIFY(r.out.contains(QByteArray::number(two[3].toDouble(), 'f', 3)));
+
+        QFile runs(dir.filePath(QStringLiteral("crease_runs.csv")));
+        QVERIFY(runs.open(QIODevice::ReadOnly));
+        const QStringList bins =
+            QString::fromUtf8(runs.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(bins[0], QStringLiteral("from_mm,to_mm,runs"));
+        long counted = 0;
+        for (const QString& bin : bins.mid(1)) counted += bin.split(QLatin1Char(','))[2].toLong();
+        const QRegularExpression said(QStringLiteral("crease runs: (\\d+),"));
+        const QRegularExpressionMatch m = said.match(QString::fromUtf8(r.out));
+        QVERIFY(m.hasMatch());
+        QCOMPARE(counted, m.captured(1).toLong());
+
+        const QImage maps(dir.filePath(QStringLiteral("crease_maps.png")));
+        QCOMPARE(maps.size(), QSize(2 * 210, 297 + 36));
+
+        const Result bad = runPaperfold({"crumple", "--output-dir", dir.path(), "--cycles", "11"});
+        QCOMPARE(bad.exitCode, 1);
+        QVERIFY2(bad.err.contains("--cycles"), bad.err.constData());
     }
 
     void statsJsonHasEveryKey() {

@@ -260,6 +260,10 @@
         <source>Fold: draw a line across the paper; the lighter side is carried round it, pressed flat, opened to the angle set in the Parameters panel and let go (L)</source>
         <translation>Falten: eine Linie über das Papier ziehen; die leichtere Seite wird um sie herumgeführt, flach gepresst, auf den im Bereich Parameter eingestellten Winkel geöffnet und losgelassen (L)</translation>
     </message>
+    <message>
+        <source>Cr&amp;umple Cycles (crumpled and pulled flat, ten times)</source>
+        <translation>&amp;Knüllen (zehnmal zerknüllt und glatt gezogen)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>

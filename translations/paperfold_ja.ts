@@ -255,6 +255,10 @@
         <source>Fold: draw a line across the paper; the lighter side is carried round it, pressed flat, opened to the angle set in the Parameters panel and let go (L)</source>
         <translation>折る：紙を横切る線を引きます。軽い側が線のまわりに運ばれ、平らに押さえられ、パラメーターパネルで設定した角度まで開かれてから放されます（L）</translation>
     </message>
+    <message>
+        <source>Cr&amp;umple Cycles (crumpled and pulled flat, ten times)</source>
+        <translation>くしゃくしゃ反復（10回丸めて平らに戻す）(&amp;U)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>

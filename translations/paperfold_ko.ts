@@ -255,6 +255,10 @@
         <source>Fold: draw a line across the paper; the lighter side is carried round it, pressed flat, opened to the angle set in the Parameters panel and let go (L)</source>
         <translation>접기: 종이를 가로지르는 선을 그립니다. 가벼운 쪽이 선을 따라 넘겨지고, 평평하게 눌린 뒤, 매개변수 패널에서 정한 각도까지 펼쳐지고 놓입니다 (L)</translation>
     </message>
+    <message>
+        <source>Cr&amp;umple Cycles (crumpled and pulled flat, ten times)</source>
+        <translation>구기기 반복 (열 번 구겼다 펴기)(&amp;U)</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>

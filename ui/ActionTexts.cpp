@@ -18,6 +18,7 @@ void ActionTexts::apply(const QObject* window) {
     set("new.compress", tr("&Compress (edges pushed together)"));
     set("new.drop", tr("D&rop (tilted sheet falls)"));
     set("new.fold", tr("&Fold (one edge turned over onto the other)"));
+    set("new.crumple-cycles", tr("Cr&umple Cycles (crumpled and pulled flat, ten times)"));
     set("open", tr("&Open…"));
     set("save", tr("&Save"));
     set("saveAs", tr("Save &As…"));
