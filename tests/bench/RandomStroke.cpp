@@ -18,8 +18,9 @@ void sendMouse(QWidget* view, QEvent::Type type, const QPoint& p, Qt::MouseButto
 } // namespace
 
 void randomStroke(QWidget* view, QRandomGenerator& rng, int moves,
-                  const std::function<bool()>& stop) {
-    QPoint p = view->rect().center() + QPoint(rng.bounded(-150, 151), rng.bounded(-100, 101));
+                  const std::function<bool()>& stop, std::optional<QPoint> start) {
+    const QPoint near = QPoint(rng.bounded(-150, 151), rng.bounded(-100, 101));
+    QPoint p = start ? *start : view->rect().center() + near;
     const QPoint step(rng.bounded(-6, 7), rng.bounded(-6, 7));
     sendMouse(view, QEvent::MouseMove, p, Qt::NoButton, Qt::NoButton);
     QTest::qWait(30);

@@ -1,0 +1,107 @@
+// Editor endurance benchmark (not a ctest: it runs for minutes). Drives a real
+// MainWindow as a user's mouse would: push strokes one after another, each starting
+// where the `press` sheet shows, for PUSH_SECONDS (default 120) of wall time, then hands off for
+// REST_SECONDS (default 10); PUSH_SHOT=file.png saves the window at the end. Every 10 s it prints
+// the sheet's size, the step's cost, frames drawn per second and how much simulated time passed per
+// second of wall time: the editor keeps up with real time while that stays at 1.
+//   xvfb-run -a -s "-screen 0 1280x1024x24" build/tests/editor_push_minutes
+// Exit status 1 if the simulation fell below 0.9 of real time in any 10 s.
+#include "MainWindow.h"
+#include "RandomStroke.h"
+#include "SheetSnapshot.h"
+#include "SimulationThread.h"
+#include "Viewport.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QRandomGenerator>
+#include <QSignalSpy>
+#include <QtTest>
+#include <cstdio>
+#include <cstdlib>
+
+using namespace pf;
+
+namespace {
+
+int envInt(const char* name, int fallback) {
+    const char* v = std::getenv(name);
+    return v && *v ? std::atoi(v) : fallback;
+}
+
+// Where a random vertex of the sheet shows in the view: a user pushes the paper where it
+// is, wherever earlier strokes have moved it.
+QPoint onTheSheet(const Viewport* view, QRandomGenerator& rng) {
+    const SheetSnapshot* snap = view->snapshot();
+    if (!snap || snap->x.empty()) return view->rect().center();
+    const Vec3& x = snap->x[rng.bounded(static_cast<int>(snap->x.size()))];
+    const OrbitCamera& camera = view->camera();
+    const Eigen::Vector4d clip = camera.projection(double(view->width()) / view->height()) *
+                                 camera.view() * Eigen::Vector4d(x.x(), x.y(), x.z(), 1.0);
+    const double nx = clip.x() / clip.w(), ny = clip.y() / clip.w();
+    return QPoint(static_cast<int>((0.5 + 0.5 * nx) * view->width()),
+                  static_cast<int>((0.5 - 0.5 * ny) * view->height()));
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("PaperFoldPushBench"));
+    const int pushSeconds = envInt("PUSH_SECONDS", 120);
+    const int restSeconds = envInt("REST_SECONDS", 10);
+    QRandomGenerator rng(2026);
+
+    MainWindow window;
+    window.resize(1280, 720);
+    window.showError = [](const QString& m) { std::fprintf(stderr, "error: %s\n", qPrintable(m)); };
+    window.askToSave = [] { return QMessageBox::Discard; };
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window)) return 2;
+    QElapsedTimer t;
+    t.start();
+    while (!window.viewport()->snapshot() && t.elapsed() < 10000) QTest::qWait(10);
+    const double dt = 1.0 / 240.0; // the editor's step
+    SimulationThread* sim = window.simulation();
+    sim->setPlaying(true);
+
+    QSignalSpy frames(window.viewport(), &Viewport::frameDrawn);
+    double worst = 1e9;
+    std::int64_t lastStep = sim->status().step;
+    QElapsedTimer wall;
+    wall.start();
+    std::printf(
+        "   wall  phase  vertices  springs  breaks (/s)  step µs   fps  sim s per wall s\n");
+    const auto report = [&](const char* phase) {
+        const SimulationStatus st = sim->status();
+        const double seconds = wall.restart() * 1e-3;
+        const double pace = (st.step - lastStep) * dt / seconds;
+        std::printf("%7.0f  %5s  %8d  %7d  %6d (%3d)  %7.0f  %4.0f  %.2f\n", t.elapsed() * 1e-3,
+                    phase, st.vertices, st.springs, st.breaks, st.breaksLastSecond,
+                    st.stepSeconds * 1e6, frames.count() / seconds, pace);
+        std::fflush(stdout);
+        worst = std::min(worst, pace);
+        lastStep = st.step;
+        frames.clear();
+    };
+    QElapsedTimer phase;
+    phase.start();
+    for (int chunk = 0; chunk < pushSeconds / 10; ++chunk) {
+        QElapsedTimer c;
+        c.start();
+        while (c.elapsed() < 10'000)
+            bench::randomStroke(
+                window.viewport(), rng, 40, [&] { return c.elapsed() >= 10'000; },
+                onTheSheet(window.viewport(), rng));
+        report("push");
+    }
+    for (int chunk = 0; chunk < restSeconds / 10; ++chunk) {
+        QTest::qWait(10'000);
+        report("rest");
+    }
+    std::printf("slowest 10 s: %.2f of real time\n", worst);
+    if (const char* shot = std::getenv("PUSH_SHOT"))
+        window.grab().save(QString::fromLocal8Bit(shot));
+    window.close();
+    return worst >= 0.9 ? 0 : 1;
+}
