@@ -417,6 +417,16 @@ void EditSession::swapSheet(const World& world, int sheet) {
     w.script.sphereKeys.clear();
     w.sphere = tool;
     w.stepCount = step;
+    // The clock runs on (commands stay in step order), so the incoming sheet's script
+    // moves with it: a fresh scene starts its pins' motions now, and a sheet given back
+    // by an undo goes on from where it was. Left at the old times, a Reset of
+    // crumple-cycles mid-gather pulled the flat rim out to twice its size.
+    const double shift = time - w.time;
+    for (PinGroup& g : w.script.pins) {
+        g.start += shift;
+        g.until += shift;
+        g.release += shift;
+    }
     w.time = time;
     sheet_ = sheet;
     settledSince_ = kNone;

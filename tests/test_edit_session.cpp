@@ -648,6 +648,42 @@ class TestEditSession : public QObject {
     // the fresh sheet undo as usual; undo of the Reset gives back the crumpled sheet bit
     // for bit, and then its own strokes undo again, while a stroke of the other sheet is
     // refused; redo resets again. The whole session replays, through the file too.
+    // The clock runs on through a Reset, and the fresh sheet's scripted pins start their
+    // motions then: crumple-cycles reset when its first gather ends gathers again from
+    // the flat sheet and is back flat one cycle later (at the old times the pull came
+    // first and drew the flat rim out to 1.7 times its size). Undone, the gathered sheet
+    // goes on with its own cycle: held, pulled out flat.
+    void aResetSceneStartsItsScriptWhenItIsReset() {
+        World scene = *makeScene("crumple-cycles");
+        scene.params.breaking = false;
+        const World fresh = scene;
+        const std::vector<Index> rim = fresh.script.pins.front().vertices;
+        const auto rimIsBack = [&](const World& w) {
+            for (Index i : rim)
+                if ((w.sheet.verts.x[i] - fresh.sheet.verts.x[i]).norm() > 1e-9) return false;
+            return true;
+        };
+        EditSession session(std::move(scene));
+        const int gather = static_cast<int>(std::lround(kCrumpleGather * 240));
+        const int cycle = static_cast<int>(std::lround(kCrumpleCycleSeconds * 240));
+        QCOMPARE(session.advance(gather), StepStatus::Ok);
+        const auto reset = session.reset(fresh);
+        QVERIFY(reset.has_value());
+        QCOMPARE(session.advance(gather), StepStatus::Ok);
+        double widest = 0.0;
+        for (Index i : rim)
+            widest = std::max(widest, std::abs(session.world().sheet.verts.x[i].x()));
+        QVERIFY2(widest < 0.5 * SceneOptions{}.width, qPrintable(QString::number(widest)));
+        QCOMPARE(session.advance(cycle - gather), StepStatus::Ok);
+        QVERIFY(rimIsBack(session.world()));
+        QVERIFY(session.undoStroke(reset->stroke).has_value());
+        QVERIFY(!rimIsBack(session.world()));
+        const int squeezeAndPull =
+            static_cast<int>(std::lround((kCrumpleSqueeze + kCrumpleGather) * 240));
+        QCOMPARE(session.advance(squeezeAndPull), StepStatus::Ok);
+        QVERIFY(rimIsBack(session.world()));
+    }
+
     void resetIsAnUndoStepThatGivesTheSheetBack() {
         EditSession session(*makeScene("press"));
         const World fresh = session.world();
