@@ -12,6 +12,7 @@
 // the surface at subdivision level n instead of the default. Exit status 1 if an RSS after New
 // exceeds the fresh start by more than 20 % and keeps growing in three more rounds, or by more
 // than 35 %.
+#include "BenchWindow.h"
 #include "MainWindow.h"
 #include "QueuedSignalSpy.h"
 #include "RandomStroke.h"
@@ -51,11 +52,6 @@ double heapHeldMb() { // sbrk/mmap'ed arena space plus mmapped chunks
     return double(mi.arena + mi.hblkhd) / (1024.0 * 1024.0);
 }
 
-int envInt(const char* name, int fallback) {
-    const char* v = std::getenv(name);
-    return v && *v ? std::atoi(v) : fallback;
-}
-
 // Lets the GUI paint for `ms` and waits for a snapshot published after everything
 // queued so far, so the status and the viewport show the current sheet.
 SimulationStatus settle(MainWindow& w, int ms) {
@@ -90,22 +86,13 @@ void crumple(MainWindow& w, double seconds, QRandomGenerator& rng) {
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("PaperFoldMemoryBench"));
-    const int rounds = envInt("ROUNDS", 5);
-    const int seconds = envInt("CRUMPLE_SECONDS", 25);
-    const bool trim = envInt("PF_TRIM", 0) != 0;
+    const int rounds = bench::envInt("ROUNDS", 5);
+    const int seconds = bench::envInt("CRUMPLE_SECONDS", 25);
+    const bool trim = bench::envInt("PF_TRIM", 0) != 0;
     QRandomGenerator rng(12345);
 
     MainWindow window;
-    window.resize(1000, 700);
-    window.showError = [](const QString& m) { std::fprintf(stderr, "error: %s\n", qPrintable(m)); };
-    window.askToSave = [] { return QMessageBox::Discard; };
-    window.show();
-    if (!QTest::qWaitForWindowExposed(&window)) return 2;
-    QElapsedTimer t;
-    t.start();
-    while (!window.viewport()->snapshot() && t.elapsed() < 10000) QTest::qWait(10);
-    if (!window.viewport()->glError().isEmpty())
-        std::fprintf(stderr, "GL: %s\n", qPrintable(window.viewport()->glError()));
+    if (!bench::showBenchWindow(window, QSize(1000, 700))) return 2;
 
     if (const char* level = std::getenv("PF_SUBDIVISION")) { // diagnosis: surface size
         RenderOptions o = window.viewport()->renderOptions();
@@ -118,7 +105,7 @@ int main(int argc, char** argv) {
     // (malloc_trim gives them back; the next frame takes them again). Measured without
     // the warm-up, that one-time step is +15 to +22 %, the same after 1 round as after 5;
     // what this benchmark looks for is memory that a round leaves behind.
-    const int warmup = envInt("WARMUP_SECONDS", 3);
+    const int warmup = bench::envInt("WARMUP_SECONDS", 3);
     const double coldRss = rssMb();
     if (warmup > 0) {
         std::printf("cold start: RSS %.1f MB  heap in use %.1f MB\n", coldRss, heapInUseMb());
@@ -171,7 +158,7 @@ int main(int argc, char** argv) {
             worst = std::max(worst, rss);
         }
     }
-    if (envInt("PF_EXIT_AFTER_NEW", 0)) {
+    if (bench::envInt("PF_EXIT_AFTER_NEW", 0)) {
         // For heaptrack: what is still allocated now is reported as leaked.
         std::fflush(stdout);
         std::_Exit(0);

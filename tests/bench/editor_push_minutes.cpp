@@ -6,6 +6,7 @@
 // second of wall time: the editor keeps up with real time while that stays at 1.
 //   xvfb-run -a -s "-screen 0 1280x1024x24" build/tests/editor_push_minutes
 // Exit status 1 if the simulation fell below 0.9 of real time in any 10 s.
+#include "BenchWindow.h"
 #include "MainWindow.h"
 #include "RandomStroke.h"
 #include "SheetSnapshot.h"
@@ -23,11 +24,6 @@
 using namespace pf;
 
 namespace {
-
-int envInt(const char* name, int fallback) {
-    const char* v = std::getenv(name);
-    return v && *v ? std::atoi(v) : fallback;
-}
 
 // Where a random vertex of the sheet shows in the view: a user pushes the paper where it
 // is, wherever earlier strokes have moved it.
@@ -48,19 +44,14 @@ QPoint onTheSheet(const Viewport* view, QRandomGenerator& rng) {
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("PaperFoldPushBench"));
-    const int pushSeconds = envInt("PUSH_SECONDS", 120);
-    const int restSeconds = envInt("REST_SECONDS", 10);
+    const int pushSeconds = bench::envInt("PUSH_SECONDS", 120);
+    const int restSeconds = bench::envInt("REST_SECONDS", 10);
     QRandomGenerator rng(2026);
 
     MainWindow window;
-    window.resize(1280, 720);
-    window.showError = [](const QString& m) { std::fprintf(stderr, "error: %s\n", qPrintable(m)); };
-    window.askToSave = [] { return QMessageBox::Discard; };
-    window.show();
-    if (!QTest::qWaitForWindowExposed(&window)) return 2;
+    if (!bench::showBenchWindow(window, QSize(1280, 720))) return 2;
     QElapsedTimer t;
     t.start();
-    while (!window.viewport()->snapshot() && t.elapsed() < 10000) QTest::qWait(10);
     const double dt = 1.0 / 240.0; // the editor's step
     SimulationThread* sim = window.simulation();
     sim->setPlaying(true);
