@@ -83,6 +83,12 @@ int runCrumple(const QStringList& arguments) {
          QStringLiteral("n")},
         {QStringLiteral("seed"),
          QStringLiteral("Seed of the breaks and the crumpling (default 1)."), QStringLiteral("n")},
+        {QStringLiteral("resolution"),
+         QStringLiteral("Vertices across the sheet's width, %1-%2 (default 19; the time grows "
+                        "with the square).")
+             .arg(kMinResolution)
+             .arg(kMaxResolution),
+         QStringLiteral("n")},
     });
     if (!parseCommand(parser, arguments)) return 0;
     const int cycles =
@@ -90,6 +96,9 @@ int runCrumple(const QStringList& arguments) {
                              .value_or(kCrumpleCycles));
     SceneOptions scene;
     scene.seed = seedOption(parser, QStringLiteral("seed")).value_or(1);
+    scene.resolution = static_cast<int>(
+        integerOption(parser, QStringLiteral("resolution"), kMinResolution, kMaxResolution)
+            .value_or(0));
     const QDir dir(parser.value(QStringLiteral("output-dir")));
     if (!dir.exists() && !QDir().mkpath(dir.path()))
         throw UsageError{QStringLiteral("--output-dir: cannot create '%1'").arg(dir.path())};

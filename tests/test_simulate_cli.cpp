@@ -119,6 +119,10 @@ class TestSimulateCli : public QObject {
         const Result bad = runPaperfold({"crumple", "--output-dir", dir.path(), "--cycles", "11"});
         QCOMPARE(bad.exitCode, 1);
         QVERIFY2(bad.err.contains("--cycles"), bad.err.constData());
+        const Result coarse =
+            runPaperfold({"crumple", "--output-dir", dir.path(), "--resolution", "2"});
+        QCOMPARE(coarse.exitCode, 1);
+        QVERIFY2(coarse.err.contains("--resolution"), coarse.err.constData());
     }
 
     void statsJsonHasEveryKey() {
