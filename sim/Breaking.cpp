@@ -243,10 +243,31 @@ bool leavesMass(const Sheet& sheet, Index spring) {
     return sheet.verts.m[S.a[spring]] > share && sheet.verts.m[S.b[spring]] > share;
 }
 
+// Whether the four triangles the split makes are proper in material space, with room to
+// spare for rounding. Always so on a sheet this program built; a sheet from a file may
+// hold material points a hair apart (the fuzzer found 8e-59 m), and halving a
+// triangle that thin rounds it to a line, which no sheet may hold.
+bool splitsIntoProperTriangles(const Sheet& sheet, Index spring) {
+    const auto& S = sheet.springs;
+    const auto& X = sheet.verts.X;
+    const Index i = S.a[spring], j = S.b[spring];
+    const Vec2 n = 0.5 * (X[i] + X[j]);
+    const auto proper = [](const Vec2& p, const Vec2& q, const Vec2& o) {
+        const Vec2 a = q - p, b = o - p;
+        return std::abs(a.x() * b.y() - a.y() * b.x()) > 1e-9 * a.norm() * b.norm();
+    };
+    for (const Index face : S.faces[spring]) {
+        const Vec2& o = X[sheet.oppositeVertex(face, i, j)];
+        if (!proper(X[i], n, o) || !proper(n, X[j], o)) return false;
+    }
+    return true;
+}
+
 } // namespace
 
 bool canBreak(const Sheet& sheet, Index spring) {
-    return splittable(sheet, spring) && leavesMass(sheet, spring);
+    return splittable(sheet, spring) && leavesMass(sheet, spring) &&
+           splitsIntoProperTriangles(sheet, spring);
 }
 
 namespace {
@@ -259,9 +280,13 @@ bool breakCandidate(const Sheet& sheet, Index spring, double spacing) {
     const auto& V = sheet.verts;
     const Index i = S.a[spring], j = S.b[spring];
     if (V.pinned[i] && V.pinned[j]) return false;
-    // The cheap test first: most edges of a sheet are not compressed at all.
-    if (!((V.x[i] - V.x[j]).norm() < S.rest[spring])) return false;
-    return leavesMass(sheet, spring) && keepsCreaseSpacing(sheet, spring, spacing);
+    // The cheap test first: most edges of a sheet are not compressed at all. An edge
+    // squeezed to nothing (pins can hold i on j) is not a candidate: its crease would
+    // remember a rest length of zero.
+    const double l = (V.x[i] - V.x[j]).norm();
+    if (!(l > 0.0 && l < S.rest[spring])) return false;
+    return leavesMass(sheet, spring) && keepsCreaseSpacing(sheet, spring, spacing) &&
+           splitsIntoProperTriangles(sheet, spring);
 }
 
 double candidateProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,

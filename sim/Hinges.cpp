@@ -40,7 +40,9 @@ int runHingePass(Sheet& sheet, const SimParams& params, std::int64_t step) {
         const auto& V = sheet.verts;
         const double d2 = (V.x[r] - V.x[l]).squaredNorm();
         const double rest2 = (V.X[r] - V.X[l]).squaredNorm();
-        if (!(d2 < threshold2 * rest2)) continue;
+        // r on l (pins can hold them there) leaves a spring no direction and no positive
+        // rest length: the fold gets its hinge once they part.
+        if (!(d2 > 0.0 && d2 < threshold2 * rest2)) continue;
 
         insertHinge(sheet, s, std::sqrt(d2), step);
         ++inserted;

@@ -5,9 +5,11 @@
 // Each case is a regression test for a reproduction in the issue that found it.
 #include "OutputFile.h"
 #include "OutputPattern.h"
+#include "RecordingFile.h"
 #include "ReferenceImage.h"
 #include "Scenes.h"
 #include "SheetFile.h"
+#include "SheetValidation.h"
 
 #include <QCryptographicHash>
 #include <QDir>
@@ -465,6 +467,20 @@ class TestHostileInput : public QObject {
         QString error;
         QVERIFY(pf::decodeReferenceImage(gif.readAll(), &error).isNull());
         QVERIFY(!error.isEmpty());
+        // A crumple-cycles recording whose sheet has two pinned rim vertices on one point:
+        // a hinge between them had rest length zero, and the replayed sheet was invalid.
+        // A press recording whose sheet holds two material points 8e-59 m apart: a break
+        // halved a triangle that thin into one of zero area.
+        for (const char* name :
+             {"recording_coincident_pins.bin", "recording_hairline_triangle.bin"}) {
+            QFile file(dir.filePath(QString::fromLatin1(name)));
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            const pf::RecordingLoad recording = pf::decodeRecording(file.readAll());
+            QVERIFY2(recording.log, qPrintable(recording.error));
+            pf::EditSession session(*recording.log);
+            pf::replay(*recording.log, session);
+            QCOMPARE(QString::fromStdString(pf::validateSheet(session.world().sheet)), QString());
+        }
     }
 
     void devicesAndPipesAreNotRead() {

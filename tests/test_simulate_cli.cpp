@@ -364,6 +364,9 @@ class TestSimulateCli : public QObject {
     }
 
     void stabilityMapsWhereMethodsFail() {
+        // A sweep of every method over a grid: numbers, checked in the Release build (it
+        // took 50-160 s of the sanitized suite, whose work is the memory it touches).
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("a numeric sweep; run in the Release build");
         QTemporaryDir dir;
         const Result r = runPaperfold({"stability", "--quick", "--output-dir", dir.path()}, true);
         QVERIFY2(r.exitCode == 0, r.err.constData());
@@ -392,6 +395,9 @@ class TestSimulateCli : public QObject {
     }
 
     void benchChartsSpeedAgainstAccuracy() {
+        // A sweep of every method over a grid: numbers, checked in the Release build (it
+        // took 50-160 s of the sanitized suite, whose work is the memory it touches).
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("a numeric sweep; run in the Release build");
         QTemporaryDir dir;
         const Result r = runPaperfold({"bench", "--quick", "--output-dir", dir.path()}, true);
         QVERIFY2(r.exitCode == 0, r.err.constData());

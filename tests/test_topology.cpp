@@ -176,6 +176,30 @@ class TestTopology : public QObject {
         QVERIFY(std::abs(totalMass(s) - mass) <= 1e-12 * mass);
     }
 
+    // Pins can hold two vertices on one point (the fuzzer found a recording that does).
+    // Neither a hinge between them nor a crease of an edge squeezed to nothing may be
+    // made: either would be a spring of rest length zero, which no sheet may hold.
+    void noSpringIsMadeBetweenCoincidentVertices() {
+        Sheet s = test::makeFoldedQuad();
+        SimParams p;
+        p.hingeThreshold = 0.5;
+        s.verts.x[2] = s.verts.x[3] = Vec3(0.0, 0.3, 0.0); // r on l
+        QCOMPARE(runHingePass(s, p, 0), 0);
+        s.verts.x[3].z() = -1e-9; // parted: the fold gets its hinge
+        QCOMPARE(runHingePass(s, p, 1), 1);
+        QCOMPARE(validateSheet(s), std::string());
+
+        Sheet squeezed = test::makeFoldedQuad();
+        squeezed.verts.x[1] = squeezed.verts.x[0]; // j on i: edge 0 at length zero
+        p.phi = 0.0;
+        std::vector<Vec3> normals;
+        computeVertexNormals(squeezed, normals);
+        QCOMPARE(springBreakProbability(squeezed, normals, 0, p), 0.0);
+        squeezed.verts.x[1].x() += 1e-6; // barely apart: a candidate again
+        computeVertexNormals(squeezed, normals);
+        QVERIFY(springBreakProbability(squeezed, normals, 0, p) > 0.0);
+    }
+
     void hingeInsertedWhenFoldClosesAndRecovered() {
         Sheet s = test::makeFoldedQuad();
         SimParams p;
