@@ -13,7 +13,8 @@ ctest_args=()
 for arg in "$@"; do
     if [ "$arg" = "--threads" ]; then
         targets=(--target test_editor test_viewport test_render)
-        ctest_args+=(-R '^(test_editor|test_viewport|test_render)$')
+        # Two at a time: test_editor alone takes most of it, the other two run beside it.
+        ctest_args+=(-R '^(test_editor|test_viewport|test_render)$' -j2)
     else
         ctest_args+=("$arg")
     fi
