@@ -1040,6 +1040,8 @@ class TestEditor : public QObject {
         QVERIFY(waitForCount(recorded, 1));
         QTRY_COMPARE(window->undoStack()->count(), 2);
         QVERIFY(window->undoStack()->undoText().startsWith(QStringLiteral("Fold")));
+        // The status bar says the fold is done ("Folding…" stood for seconds after it).
+        QVERIFY(window->statusBar()->currentMessage().startsWith(QStringLiteral("Folded")));
         for (int s = 0; s < 480; ++s) window->simulation()->stepOnce();
         settledStatus(*window);
         QTRY_VERIFY(window->action("undo")->isEnabled());

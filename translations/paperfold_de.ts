@@ -568,6 +568,10 @@
         <source>Not now: a fold is under way.</source>
         <translation>Nicht jetzt: Eine Faltung läuft noch.</translation>
     </message>
+    <message>
+        <source>Folded: the crease keeps it. Edit ▸ Undo unfolds the paper.</source>
+        <translation>Gefaltet: Der Knick hält die Faltung. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -563,6 +563,10 @@
         <source>Not now: a fold is under way.</source>
         <translation>今はできません：折りの途中です。</translation>
     </message>
+    <message>
+        <source>Folded: the crease keeps it. Edit ▸ Undo unfolds the paper.</source>
+        <translation>折りました：折り目が折りを保ちます。編集 ▸ 元に戻す で紙を開きます。</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -563,6 +563,10 @@
         <source>Not now: a fold is under way.</source>
         <translation>지금은 할 수 없습니다: 접는 중입니다.</translation>
     </message>
+    <message>
+        <source>Folded: the crease keeps it. Edit ▸ Undo unfolds the paper.</source>
+        <translation>접었습니다: 접힌 자국이 접힘을 유지합니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

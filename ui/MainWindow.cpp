@@ -108,6 +108,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                 undo_->push(new StrokeCommand(sim_.get(), stroke, events, kind));
                 // The view fits the fresh sheet, as after New (its snapshot comes next).
                 if (kind == static_cast<int>(EditSession::StrokeKind::Reset)) firstSnapshot_ = true;
+                // The fold's "Folding…" would otherwise stand for seconds after it ended.
+                if (kind == static_cast<int>(EditSession::StrokeKind::Fold))
+                    statusBar()->showMessage(
+                        tr("Folded: the crease keeps it. Edit ▸ Undo unfolds the paper."), 5000);
             });
     connect(sim_.get(), &SimulationThread::settled, this, [this](int stroke) {
         undo_->push(new StrokeCommand(sim_.get(), stroke, 0,
