@@ -5,7 +5,8 @@
 #   scripts/tsan.sh --threads  only the suites that run more than one thread of the
 #                              project's (the editor's simulation thread, the renderer):
 #                              what CI runs, to stay within its time
-# Other arguments go to ctest, e.g. `scripts/tsan.sh -R test_editor`.
+# Other arguments go to ctest, e.g. `scripts/tsan.sh -R test_editor`
+# (both halves of the editor suite, test_editor.1 and .2).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 targets=()
@@ -13,8 +14,8 @@ ctest_args=()
 for arg in "$@"; do
     if [ "$arg" = "--threads" ]; then
         targets=(--target test_editor test_viewport test_render)
-        # Two at a time: test_editor alone takes most of it, the other two run beside it.
-        ctest_args+=(-R '^(test_editor|test_viewport|test_render)$' -j2)
+        # Two at a time: the editor suite's two halves first, the other two beside them.
+        ctest_args+=(-R '^(test_editor\.[0-9]+|test_viewport|test_render)$' -j2)
     else
         ctest_args+=("$arg")
     fi

@@ -13,6 +13,7 @@
 #include "SheetStats.h"
 #include "SimulationThread.h"
 #include "SolverPanel.h"
+#include "TestShard.h"
 #include "Viewport.h"
 #include "ViewportInput.h"
 
@@ -1092,5 +1093,5 @@ class TestEditor : public QObject {
     }
 };
 
-QTEST_MAIN(TestEditor)
+PAPERFOLD_SHARDED_TEST_MAIN(TestEditor)
 #include "test_editor.moc"
