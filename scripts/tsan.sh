@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds PaperFold with ThreadSanitizer and runs the test suites under it, so that the
 # project's own code is shown race-free (docs/safety.md).
-#   scripts/tsan.sh            every suite (about 12 minutes on 2 cores)
+#   scripts/tsan.sh            every suite but the physics-only ones (tests/CMakeLists.txt)
 #   scripts/tsan.sh --threads  only the suites that run more than one thread of the
 #                              project's (the editor's simulation thread, the renderer):
 #                              what CI runs, to stay within its time
