@@ -87,6 +87,12 @@ QImage paperTextureImage(const PaperLook& look) {
 }
 
 bool loadPaperImage(const QString& path, QImage* image, QString* error) {
+    // Qt's reader would print "No file name specified" to the console and fail anyway
+    // (the editor's first session, with no texture saved, asked for this).
+    if (path.isEmpty()) {
+        if (error) *error = QStringLiteral("no picture was named for the paper texture");
+        return false;
+    }
     QImageReader reader(path);
     reader.setAutoTransform(true);
     const QSize size = reader.size();

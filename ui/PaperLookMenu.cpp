@@ -84,10 +84,9 @@ void PaperLookMenu::restore() {
             paperColorFromText(settings.value(QLatin1String(kColorSetting)).toString(), nullptr))
         look.color = *c;
     // A picture gone since the last session leaves the paper plain, quietly: the
-    // session starts without a dialog about a view setting. A first session has no
-    // setting (read as a picture, it printed Qt's "No file name specified" twice).
-    const QString texture = settings.value(QLatin1String(kTextureSetting)).toString();
-    if (!texture.isEmpty()) setPaperTextureFromText(texture, &look, nullptr);
+    // session starts without a dialog about a view setting.
+    setPaperTextureFromText(settings.value(QLatin1String(kTextureSetting)).toString(), &look,
+                            nullptr);
     look_ = look;
     color_->setIcon(swatch(look_.color));
     checkCurrentTexture();
