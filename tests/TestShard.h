@@ -5,7 +5,7 @@
 // or when functions are named on the command line, the suite runs as QTEST_MAIN would.
 // tests/CMakeLists.txt registers one ctest entry per share.
 #include <QMetaMethod>
-#include <QtTest>
+#include <QTest>
 
 namespace pf::testing {
 

@@ -4,7 +4,7 @@
 #include "SheetValidation.h"
 #include "TestSheets.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace pf;
 

@@ -5,7 +5,7 @@
 #include "SheetStats.h"
 #include "Simulation.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace pf;
 

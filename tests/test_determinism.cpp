@@ -5,7 +5,7 @@
 #include "Simulation.h"
 #include "SymplecticEulerIntegrator.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace pf;
 

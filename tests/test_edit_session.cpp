@@ -11,7 +11,8 @@
 #include "SheetStats.h"
 #include "SheetValidation.h"
 
-#include <QtTest>
+#include <QTest>
+#include <QtEndian>
 #include <random>
 
 using namespace pf;

@@ -6,7 +6,7 @@
 #include "SurfaceExport.h"
 
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 #include <tiny_gltf.h>

@@ -3,7 +3,7 @@
 // the xpbd integrator with office paper meets each of them.
 #include "Fidelity.h"
 
-#include <QtTest>
+#include <QTest>
 #include <cmath>
 #include <set>
 

@@ -8,7 +8,7 @@
 #include "SheetFile.h"
 #include "SheetStats.h"
 
-#include <QtTest>
+#include <QTest>
 #include <numbers>
 
 using namespace pf;

@@ -6,7 +6,7 @@
 #include "SheetBuilder.h"
 #include "XpbdIntegrator.h"
 
-#include <QtTest>
+#include <QTest>
 #include <cmath>
 
 using namespace pf;

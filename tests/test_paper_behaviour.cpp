@@ -9,7 +9,7 @@
 #include "Simulation.h"
 #include "TestSheets.h"
 
-#include <QtTest>
+#include <QTest>
 #include <cmath>
 #include <numbers>
 

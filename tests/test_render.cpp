@@ -15,7 +15,7 @@
 #include "Scenes.h"
 
 #include <QDir>
-#include <QtTest>
+#include <QTest>
 
 using namespace pf;
 

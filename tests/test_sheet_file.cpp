@@ -11,7 +11,8 @@
 #include <QCborMap>
 #include <QCborValue>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
+#include <QtEndian>
 #include <bit>
 #include <cstring>
 #include <functional>

@@ -9,7 +9,7 @@
 #include "SymplecticEulerIntegrator.h"
 
 #include <Eigen/Eigenvalues>
-#include <QtTest>
+#include <QTest>
 
 using namespace pf;
 

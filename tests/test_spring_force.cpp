@@ -1,7 +1,7 @@
 // The spring force's Jacobian blocks against central finite differences.
 #include "SpringForce.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace pf;
 

@@ -6,7 +6,7 @@
 #include "Simulation.h"
 #include "Subdivision.h"
 
-#include <QtTest>
+#include <QTest>
 #include <map>
 
 using namespace pf;

@@ -8,7 +8,7 @@
 #include "SheetValidation.h"
 #include "TestSheets.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace pf;
 

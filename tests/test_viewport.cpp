@@ -5,7 +5,7 @@
 #include "RenderCases.h"
 #include "Viewport.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace pf;
 

@@ -24,7 +24,7 @@
 #include <QFile>
 #include <QRandomGenerator>
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 #include <cstdio>
 #include <cstdlib>
 #include <malloc.h>

@@ -17,7 +17,7 @@
 #include <QElapsedTimer>
 #include <QRandomGenerator>
 #include <QSignalSpy>
-#include <QtTest>
+#include <QTest>
 #include <cstdio>
 #include <cstdlib>
 

@@ -19,8 +19,8 @@
 #include <QRandomGenerator>
 #include <QSlider>
 #include <QTemporaryDir>
+#include <QTest>
 #include <QUndoStack>
-#include <QtTest>
 #include <cstdio>
 #include <cstdlib>
 
