@@ -395,8 +395,7 @@ void XpbdIntegrator::factor(const Sheet& sheet, const SimParams& params) {
     const double h = solveStep(params);
     Eigen::SparseMatrix<double> a = (h * h + params.bendingDamping * h) * bending_;
     for (Index i = 0; i < nv; ++i) a.coeffRef(i, i) += solveMass_[i];
-    solver_.compute(a);
-    factored_ = solver_.info() == Eigen::Success;
+    factored_ = solver_.compute(a);
     factoredDt_ = h;
     factoredDamping_ = params.bendingDamping;
 }
@@ -454,17 +453,14 @@ void XpbdIntegrator::bendImplicitly(Sheet& sheet, const Vec3& g, double h) {
             if (!V.pinned[i]) V.v[i] += h * g;
         return;
     }
-    rhs_.resize(nv, 3);
-    sol_.resize(nv, 3);
-    for (Index i = 0; i < nv; ++i) rhs_.row(i) = V.x[i].transpose();
-    sol_ = bending_ * rhs_; // Q x
-    for (Index i = 0; i < nv; ++i)
-        rhs_.row(i) = (solveMass_[i] * V.v[i] + h * V.m[i] * g).transpose() - h * sol_.row(i);
+    rhs_.resize(static_cast<std::size_t>(nv));
+    multiplyEachCoordinate(bending_, V.x, sol_); // Q x
+    for (Index i = 0; i < nv; ++i) rhs_[i] = solveMass_[i] * V.v[i] + h * V.m[i] * g - h * sol_[i];
     if (anyPlastic_)
-        for (Index i = 0; i < nv; ++i) rhs_.row(i) += h * plasticForce_[i].transpose();
-    sol_ = solver_.solve(rhs_);
+        for (Index i = 0; i < nv; ++i) rhs_[i] += h * plasticForce_[i];
+    solver_.solve(rhs_, sol_);
     for (Index i = 0; i < nv; ++i)
-        if (!V.pinned[i]) V.v[i] = sol_.row(i).transpose();
+        if (!V.pinned[i]) V.v[i] = sol_[i];
 }
 
 // Fast projection (Goldenthal et al. 2007, "Efficient simulation of inextensible
@@ -767,6 +763,18 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         }
     };
 
+    // What each stretch constraint needs in the sub-steps, worked out once per step:
+    // its inverse masses, its XPBD gain 1 / (w_a + w_b + α/h²) and the correction its
+    // largest pull and push allow (a division per constraint and step instead of one
+    // per constraint and pass: the sub-step loop waited on it).
+    stretchStep_.clear();
+    stretchStep_.reserve(stretch_.size());
+    for (const StretchConstraint& k : stretch_) {
+        const double wsum = w_[k.a] + w_[k.b];
+        if (wsum == 0.0) continue;
+        stretchStep_.push_back({k.a, k.b, w_[k.a], w_[k.b], k.rest,
+                                1.0 / (wsum + k.compliance / h2), -k.maxPull * h2, k.maxPush * h2});
+    }
     yieldPlastically(sheet, mat);
     for (int sub = 0; sub < n; ++sub) {
         if (sub % kSubstepsPerBendingSolve == 0)
@@ -787,22 +795,17 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         collideGround(true);
         // Forward then backward, so that a pull travels across the sheet both ways
         // within one sub-step.
-        const double invH2 = 1.0 / h2;
-        const std::size_t nc = stretch_.size();
+        const std::size_t nc = stretchStep_.size();
         for (int pass = 0; pass < 2; ++pass)
             for (std::size_t q = 0; q < nc; ++q) {
-                const StretchConstraint& k = stretch_[pass == 0 ? q : nc - 1 - q];
-                const double wa = w_[k.a], wb = w_[k.b];
-                const double wsum = wa + wb;
-                if (wsum == 0.0) continue;
+                const StepConstraint& k = stretchStep_[pass == 0 ? q : nc - 1 - q];
                 const Vec3 d = V.x[k.a] - V.x[k.b];
                 const double len = d.norm();
                 if (!(len > 1e-12)) continue;
-                const double dl = std::clamp(-(len - k.rest) / (wsum + k.compliance * invH2),
-                                             -k.maxPull * h2, k.maxPush * h2);
+                const double dl = std::clamp((k.rest - len) * k.gain, k.lowest, k.highest);
                 const Vec3 u = d * (dl / len);
-                V.x[k.a] += wa * u;
-                V.x[k.b] -= wb * u;
+                V.x[k.a] += k.wa * u;
+                V.x[k.b] -= k.wb * u;
             }
         // Long-range attachments (Kim et al. 2012): no vertex gets farther from its
         // nearest pinned vertex than the paper between them allows, so a hanging sheet

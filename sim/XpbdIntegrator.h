@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Integrator.h"
+#include "VectorLdlt.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -113,17 +114,23 @@ class XpbdIntegrator final : public Integrator {
         double maxPush, maxPull; // the largest force the constraint exerts each way, N
     };
     std::vector<StretchConstraint> stretch_;
+    // The same, as the sub-steps of one step use them (advance() says why).
+    struct StepConstraint {
+        Index a, b;
+        double wa, wb, rest, gain, lowest, highest;
+    };
+    std::vector<StepConstraint> stretchStep_;
     struct Tether {
         Index vertex, pin;
         double length; // material distance: the paper between them, unstretched
     };
     std::vector<Tether> tethers_;
     Eigen::SparseMatrix<double> bending_; // Q: E_bend = ½ Σ_c xᵀ Q x over coordinates c
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
+    VectorLdlt solver_;
     std::vector<double> solveMass_; // M of the solve: pinned vertices made immovable
     double factoredDt_ = 0.0, factoredDamping_ = -1.0;
     bool factored_ = false;
-    Eigen::MatrixXd rhs_, sol_;
+    std::vector<Vec3> rhs_, sol_;
     std::vector<Vec3> xPrev_;
     std::vector<double> w_;             // inverse masses, 0 for pinned vertices
     std::vector<std::uint8_t> touched_; // touched by the tool in this sub-step

@@ -3,8 +3,9 @@
 #include "ImplicitSystem.h"
 #include "Rng.h"
 #include "SheetBuilder.h"
+#include "VectorLdlt.h"
 
-#include <QtTest>
+#include <QTest>
 
 using namespace pf;
 
@@ -43,6 +44,68 @@ class TestSolvers : public QObject {
     Q_OBJECT
 
   private slots:
+    // The xpbd step's bending solve: one walk over the factor for x, y and z together
+    // must give exactly what Eigen's column-by-column solve gives (the step's results,
+    // and so every saved sheet and hash, stay as they were), on a matrix whose ordering
+    // permutes the unknowns and whose factor fills in.
+    void vectorLdltIsEigensSolveBitForBit() {
+        const int side = 13, n = side * side;
+        Rng rng(3);
+        std::vector<Eigen::Triplet<double>> entries;
+        for (int r = 0; r < side; ++r)
+            for (int c = 0; c < side; ++c) {
+                const int i = r * side + c;
+                entries.emplace_back(i, i, 1.0 + rng.uniform()); // a mass
+                // Second differences along both directions and across a diagonal, as a
+                // plate's bending stencils couple a vertex with its neighbours' neighbours.
+                const int neighbours[3][2] = {{0, 1}, {1, 0}, {1, 1}};
+                for (const auto& d : neighbours) {
+                    if (r + 2 * d[0] >= side || c + 2 * d[1] >= side) continue;
+                    const int v[3] = {i, (r + d[0]) * side + c + d[1],
+                                      (r + 2 * d[0]) * side + c + 2 * d[1]};
+                    const double k[3] = {1.0, -2.0, 1.0};
+                    const double weight = 50.0 * (0.5 + rng.uniform());
+                    for (int a = 0; a < 3; ++a)
+                        for (int b = 0; b < 3; ++b)
+                            entries.emplace_back(v[a], v[b], weight * k[a] * k[b]);
+                }
+            }
+        Eigen::SparseMatrix<double> a(n, n);
+        a.setFromTriplets(entries.begin(), entries.end());
+        std::vector<Vec3> b(n);
+        Eigen::MatrixXd bColumns(n, 3);
+        for (int i = 0; i < n; ++i) {
+            b[i] = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+            bColumns.row(i) = b[i].transpose();
+        }
+        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> eigen(a);
+        QCOMPARE(eigen.info(), Eigen::Success);
+        VectorLdlt ours;
+        QVERIFY(ours.compute(a));
+        QVERIFY(eigen.matrixL().nestedExpression().nonZeros() > 4 * n); // it fills in
+        const Eigen::MatrixXd expected = eigen.solve(bColumns);
+        std::vector<Vec3> x;
+        ours.solve(b, x);
+        QCOMPARE(static_cast<int>(x.size()), n);
+        int differing = 0;
+        for (int i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) differing += x[i][c] != expected(i, c) ? 1 : 0;
+        QCOMPARE(differing, 0);
+        // And it solves the system.
+        std::vector<Vec3> ax;
+        multiplyEachCoordinate(a, x, ax);
+        double residual = 0.0;
+        for (int i = 0; i < n; ++i) residual = std::max(residual, (ax[i] - b[i]).norm());
+        QVERIFY2(residual < 1e-12, qPrintable(QString::number(residual)));
+        // The product, too, is Eigen's to the bit.
+        const Eigen::MatrixXd product = a * bColumns;
+        std::vector<Vec3> ab;
+        multiplyEachCoordinate(a, b, ab);
+        for (int i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) differing += ab[i][c] != product(i, c) ? 1 : 0;
+        QCOMPARE(differing, 0);
+    }
+
     void conjugateGradientSolvesTheSystem() {
         const Sheet s = stretchedSheet();
         SimParams p;
