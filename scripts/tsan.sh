@@ -21,7 +21,7 @@ for arg in "$@"; do
     fi
 done
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DPAPERFOLD_SANITIZER=thread -DPAPERFOLD_WERROR=ON
+    -DPAPERFOLD_SANITIZER=thread -DPAPERFOLD_WERROR=ON -DCMAKE_UNITY_BUILD=OFF
 cmake --build build-tsan "${targets[@]}"
 # halt_on_error: a report fails its test (exit 66) instead of scrolling past.
 export TSAN_OPTIONS="suppressions=$PWD/tests/tsan.supp halt_on_error=1 second_deadlock_stack=1 report_signal_unsafe=0"

@@ -2,6 +2,7 @@
 
 #include "BoundedCbor.h"
 #include "InputFile.h"
+#include "LittleEndian.h"
 #include "OutputFile.h"
 #include "SheetFile.h"
 
@@ -24,28 +25,10 @@ constexpr qsizetype kCommandBytes = 48;
 // A fold's line end 3 × f64, angle f64 and viewer 3 × f64, in the "folds" bytes.
 constexpr qsizetype kFoldBytes = 56;
 
-template <typename T> void put(QByteArray& out, T v) {
-    char b[sizeof(T)];
-    qToLittleEndian(v, b);
-    out.append(b, sizeof(T));
-}
-
-template <typename T> T take(const char* p) {
-    return qFromLittleEndian<T>(p);
-}
-
-double takeF64(const char* p) {
-    const std::uint64_t bits = take<std::uint64_t>(p);
-    double v;
-    std::memcpy(&v, &bits, sizeof v);
-    return v;
-}
-
-void putF64(QByteArray& out, double v) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof v);
-    put(out, bits);
-}
+using le::put;
+using le::putF64;
+using le::take;
+using le::takeF64;
 
 const CborBounds& recordingBounds() {
     static const CborBounds bounds = [] {

@@ -4,6 +4,7 @@
 #include "Breaking.h"
 #include "InputFile.h"
 #include "Integrator.h"
+#include "LittleEndian.h"
 #include "OutputFile.h"
 #include "SheetValidation.h"
 
@@ -24,16 +25,12 @@ namespace {
 // their length can be checked against the declared count before anything is built.
 
 void putI32(QByteArray& out, std::int32_t v) {
-    const auto le = qToLittleEndian(static_cast<quint32>(v));
-    out.append(reinterpret_cast<const char*>(&le), 4);
+    le::put(out, v);
 }
 void putI64(QByteArray& out, std::int64_t v) {
-    const auto le = qToLittleEndian(static_cast<quint64>(v));
-    out.append(reinterpret_cast<const char*>(&le), 8);
+    le::put(out, v);
 }
-void putF64(QByteArray& out, double v) {
-    putI64(out, std::bit_cast<std::int64_t>(v));
-}
+using le::putF64;
 void putVec3(QByteArray& out, const Vec3& v) {
     for (int k = 0; k < 3; ++k) putF64(out, v[k]);
 }
