@@ -3,8 +3,9 @@
 # project's own code is shown race-free (docs/safety.md).
 #   scripts/tsan.sh            every suite but the physics-only ones (tests/CMakeLists.txt)
 #   scripts/tsan.sh --threads  only the suites that run more than one thread of the
-#                              project's (the editor's simulation thread, the renderer):
-#                              what CI runs, to stay within its time
+#                              project's (the editor with its simulation thread and its
+#                              export thread, and the viewport): what CI runs, to stay
+#                              within its time
 # Other arguments go to ctest, e.g. `scripts/tsan.sh -R test_editor`
 # (both halves of the editor suite, test_editor.1 and .2).
 set -euo pipefail
@@ -13,13 +14,15 @@ targets=()
 ctest_args=()
 for arg in "$@"; do
     if [ "$arg" = "--threads" ]; then
-        targets=(--target test_editor test_viewport test_render)
-        # Two at a time: the editor suite's two halves first, the other two beside them.
-        ctest_args+=(-R '^(test_editor\.[0-9]+|test_viewport|test_render)$' -j2)
+        targets=(--target test_editor test_viewport)
+        # Two at a time: the editor suite's two halves first, the viewport after them.
+        ctest_args+=(-R '^(test_editor\.[0-9]+|test_viewport)$' -j2)
     else
         ctest_args+=("$arg")
     fi
 done
+# File by file (no unity build): CI's one build where each source of the libraries
+# compiles on its own, so a missing include shows here.
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DPAPERFOLD_SANITIZER=thread -DPAPERFOLD_WERROR=ON -DCMAKE_UNITY_BUILD=OFF
 cmake --build build-tsan "${targets[@]}"
