@@ -1,5 +1,6 @@
 #include "BenchCommand.h"
 
+#include "BuildTuning.h"
 #include "CommandLine.h"
 #include "OutputFile.h"
 #include "PngFile.h"
@@ -238,6 +239,8 @@ int runBench(const QStringList& arguments) {
     QTextStream c(&csv);
     c << "scene,method,dt,substeps_per_60Hz_frame,sweeps,cost_s_per_s,trajectory_error,max_strain,"
          "free_fall_ratio,energy_ratio_undamped,stable\n";
+    // Costs depend on what the compiler could assume about the processor.
+    out << "build: " << QString::fromStdString(buildTuning()) << '\n';
     out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7\n")
                .arg(QStringLiteral("scene"), -9)
                .arg(QStringLiteral("method"), -36)

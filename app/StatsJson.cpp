@@ -1,5 +1,6 @@
 #include "StatsJson.h"
 
+#include "BuildTuning.h"
 #include "SheetStats.h"
 
 namespace pf::cli {
@@ -31,6 +32,7 @@ QJsonObject statsJson(const World& w, double wallSeconds, long long steps) {
     o[QStringLiteral("sim_time")] = w.time;
     o[QStringLiteral("wall_seconds")] = wallSeconds;
     o[QStringLiteral("steps_per_second")] = wallSeconds > 0.0 ? steps / wallSeconds : 0.0;
+    o[QStringLiteral("build_tuning")] = QString::fromStdString(buildTuning());
     return o;
 }
 

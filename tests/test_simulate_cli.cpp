@@ -134,8 +134,16 @@ class TestSimulateCli : public QObject {
         QCOMPARE(error.error, QJsonParseError::NoError);
         for (const char* key : {"vertices", "springs", "triangles", "breaks", "recoveries",
                                 "hinges", "total_mass", "max_strain", "rms_strain", "state_hash",
-                                "sim_time", "wall_seconds", "steps_per_second"})
+                                "sim_time", "wall_seconds", "steps_per_second", "build_tuning"})
             QVERIFY2(o.contains(QLatin1String(key)), key);
+        // The speed is reported with the tuning that measured it: portable unless the
+        // build asked for -march=native (the tests are built with the same options).
+        const QString tuning = o[QStringLiteral("build_tuning")].toString();
+#if defined(PAPERFOLD_NATIVE)
+        QVERIFY2(tuning.startsWith(QLatin1String("native (-march=native: ")), qPrintable(tuning));
+#else
+        QCOMPARE(tuning, QStringLiteral("portable (x86-64 baseline: SSE2)"));
+#endif
         QVERIFY(o[QStringLiteral("vertices")].toInt() >= 494);
         QVERIFY(std::abs(o[QStringLiteral("total_mass")].toDouble() - 0.080 * 0.210 * 0.297) <
                 1e-12);
@@ -401,6 +409,7 @@ class TestSimulateCli : public QObject {
         QTemporaryDir dir;
         const Result r = runPaperfold({"bench", "--quick", "--output-dir", dir.path()}, true);
         QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY2(r.out.startsWith("build: "), r.out.left(200).constData());
         QFile csv(dir.filePath(QStringLiteral("bench.csv")));
         QVERIFY(csv.open(QIODevice::ReadOnly));
         const QStringList lines =
