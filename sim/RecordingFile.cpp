@@ -11,7 +11,6 @@
 #include <QCborValue>
 #include <QtEndian>
 #include <cmath>
-#include <cstring>
 
 namespace pf {
 

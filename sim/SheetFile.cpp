@@ -12,9 +12,7 @@
 #include <QCborMap>
 #include <QCborValue>
 #include <QtEndian>
-#include <bit>
 #include <cmath>
-#include <cstring>
 
 namespace pf {
 
@@ -42,18 +40,20 @@ class Unpacker {
   public:
     explicit Unpacker(QByteArray b) : bytes_(std::move(b)), p_(bytes_.constData()) {}
     std::int32_t i32() {
-        quint32 v;
-        std::memcpy(&v, p_, 4);
+        const auto v = le::take<std::int32_t>(p_);
         p_ += 4;
-        return static_cast<std::int32_t>(qFromLittleEndian(v));
+        return v;
     }
     std::int64_t i64() {
-        quint64 v;
-        std::memcpy(&v, p_, 8);
+        const auto v = le::take<std::int64_t>(p_);
         p_ += 8;
-        return static_cast<std::int64_t>(qFromLittleEndian(v));
+        return v;
     }
-    double f64() { return std::bit_cast<double>(i64()); }
+    double f64() {
+        const double v = le::takeF64(p_);
+        p_ += 8;
+        return v;
+    }
     Vec3 vec3() {
         Vec3 v;
         for (int k = 0; k < 3; ++k) v[k] = f64();
@@ -460,9 +460,7 @@ Sheet sheetFromCbor(const QCborMap& m) {
 }
 
 std::uint64_t u64From(const QByteArray& b, qsizetype offset) {
-    quint64 v;
-    std::memcpy(&v, b.constData() + offset, 8);
-    return qFromLittleEndian(v);
+    return le::take<std::uint64_t>(b.constData() + offset);
 }
 
 World worldFromCbor(const QCborMap& root) {

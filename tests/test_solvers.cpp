@@ -83,6 +83,9 @@ class TestSolvers : public QObject {
         VectorLdlt ours;
         QVERIFY(ours.compute(a));
         QVERIFY(eigen.matrixL().nestedExpression().nonZeros() > 4 * n); // it fills in
+        int moved = 0; // and its ordering permutes the unknowns
+        for (int i = 0; i < n; ++i) moved += eigen.permutationP().indices()[i] != i ? 1 : 0;
+        QVERIFY(moved > 0);
         const Eigen::MatrixXd expected = eigen.solve(bColumns);
         std::vector<Vec3> x;
         ours.solve(b, x);
