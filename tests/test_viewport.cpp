@@ -1,13 +1,54 @@
-// The editor's QOpenGLWidget path draws the same picture as the OSMesa path.
+// The editor's view draws the same picture as the OSMesa path; input that reaches its
+// native GL window is the widget's; a receiver of frameDrawn may close it.
 // Needs a display: ctest runs it under xvfb-run.
 #include "ImageCompare.h"
 #include "OffscreenRenderer.h"
 #include "RenderCases.h"
 #include "Viewport.h"
 
+#include <QMouseEvent>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QTest>
+#include <QWindow>
 
 using namespace pf;
+
+namespace {
+
+// Remembers the mouse events a widget receives, with their positions.
+class MouseLog : public QObject {
+  public:
+    std::vector<std::pair<QEvent::Type, QPoint>> events;
+    bool eventFilter(QObject*, QEvent* e) override {
+        switch (e->type()) {
+        case QEvent::MouseButtonPress:
+        case QEvent::MouseButtonRelease:
+        case QEvent::MouseMove:
+            events.emplace_back(e->type(), static_cast<QMouseEvent*>(e)->position().toPoint());
+            break;
+        default:
+            break;
+        }
+        return false;
+    }
+};
+
+QByteArray glRenderer() {
+    QOffscreenSurface surface;
+    surface.setFormat(Viewport::requiredFormat());
+    surface.create();
+    QOpenGLContext context;
+    context.setFormat(Viewport::requiredFormat());
+    if (!context.create() || !context.makeCurrent(&surface)) return {};
+    const QByteArray name(
+        reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER)));
+    context.doneCurrent();
+    return name;
+}
+
+} // namespace
 
 class TestViewport : public QObject {
     Q_OBJECT
@@ -49,6 +90,75 @@ class TestViewport : public QObject {
             d.map.save(QDir::temp().filePath(c.name + QStringLiteral(".editor-diff.png")));
         }
         QVERIFY(d.differingFraction <= 0.01);
+    }
+
+    // The mouse reaches the native window, not the widget: the window hands each event
+    // to the widget at the same position, a move without a button only when the widget
+    // tracks the mouse, and a press gives the widget the keyboard.
+    void inputOnTheWindowReachesTheWidget() {
+        Viewport view;
+        view.setFixedSize(320, 200);
+        view.setFocusPolicy(Qt::StrongFocus);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QWindow* window = view.glWindow();
+        QVERIFY(window);
+        QTRY_VERIFY(window->isExposed());
+        MouseLog log;
+        view.installEventFilter(&log);
+
+        QTest::mouseMove(window, QPoint(30, 40)); // no button, not tracking: not delivered
+        QTest::mousePress(window, Qt::LeftButton, {}, QPoint(50, 60));
+        QTest::mouseMove(window, QPoint(70, 80));
+        QTest::mouseRelease(window, Qt::LeftButton, {}, QPoint(70, 80));
+        QCOMPARE(log.events.size(), std::size_t(3));
+        QCOMPARE(log.events[0], std::make_pair(QEvent::MouseButtonPress, QPoint(50, 60)));
+        QCOMPARE(log.events[1], std::make_pair(QEvent::MouseMove, QPoint(70, 80)));
+        QCOMPARE(log.events[2], std::make_pair(QEvent::MouseButtonRelease, QPoint(70, 80)));
+        QCOMPARE(view.focusWidget(), &view); // the focus the window gets when active
+
+        view.setMouseTracking(true);
+        QTest::mouseMove(window, QPoint(90, 100));
+        QCOMPARE(log.events.size(), std::size_t(4));
+        QCOMPARE(log.events[3], std::make_pair(QEvent::MouseMove, QPoint(90, 100)));
+        view.removeEventFilter(&log);
+    }
+
+    // frameDrawn comes after the frame is on screen: a receiver that closes the view,
+    // with an update still asked for, must not pull the context out from under a paint.
+    void closingFromFrameDrawnIsSafe() {
+        const test::RenderCase& c = test::renderCases()[0];
+        auto snap = std::make_shared<SheetSnapshot>(test::snapshotFor(c));
+        Viewport view;
+        view.resize(320, 200);
+        view.setSnapshot(snap);
+        view.setCamera(test::cameraFor(c, *snap, 320.0 / 200));
+        int frames = 0;
+        connect(&view, &Viewport::frameDrawn, &view, [&] {
+            if (++frames < 3) {
+                view.setSnapshot(snap); // asks for the next frame
+                return;
+            }
+            view.setSnapshot(snap);
+            view.close();
+        });
+        view.show();
+        QTRY_COMPARE(frames, 3);
+        QTest::qWait(200); // the update asked for last arrives after the close
+        QCOMPARE(frames, 3);
+        QVERIFY(!view.isVisible());
+    }
+
+    // 4× MSAA halves the frame rate where the CPU draws: the view goes without it there,
+    // and keeps it on a GPU.
+    void multisamplingOnlyWhereAGpuDraws() {
+        const QByteArray renderer = glRenderer().toLower();
+        QVERIFY(!renderer.isEmpty());
+        const bool software = renderer.contains("llvmpipe") || renderer.contains("softpipe") ||
+                              renderer.contains("swrast");
+        qInfo("GL renderer: %s", renderer.constData());
+        QCOMPARE(Viewport::viewFormat().samples(), software ? 0 : 4);
+        QCOMPARE(Viewport::requiredFormat().samples(), 4);
     }
 };
 

@@ -1,7 +1,6 @@
 #include "MainWindow.h"
 
 #include "ActionTexts.h"
-#include "AllocatorTuning.h"
 #include "ChartBrowser.h"
 #include "EditorDialogs.h"
 #include "EditorParameters.h"
@@ -59,7 +58,6 @@ const Overlay kOverlayBits[] = {OverlaySpringKinds, OverlayBreakProbability, Ove
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("MainWindow"));
-    keepLargeAllocationsReturnable(); // so that New gives a crumpled sheet's memory back
     const World first = sceneWorld(scene_);
     sim_ = std::make_unique<SimulationThread>(first);
 

@@ -2,89 +2,83 @@
 
 #include "Legend.h"
 #include "Subdivision.h"
+#include "ViewportWindow.h"
 
 #include <QElapsedTimer>
+#include <QOffscreenSurface>
 #include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
+#include <QOpenGLFunctions>
+#include <QOpenGLPaintDevice>
 #include <QPainter>
+#include <QVBoxLayout>
+#include <algorithm>
 
 namespace pf {
 
-// The legend and any GL error, drawn by a transparent child widget over the GL
-// picture. Painting them with QPainter inside paintGL would leave QPainter's GL
-// state (blending, programs, buffers) behind for the next frame.
-class Viewport::Overlay : public QWidget {
-  public:
-    explicit Overlay(Viewport* view) : QWidget(view), view_(view) {
-        setAttribute(Qt::WA_TransparentForMouseEvents);
-        setAttribute(Qt::WA_NoSystemBackground);
-    }
+namespace {
 
-  protected:
-    void paintEvent(QPaintEvent*) override {
-        QPainter painter(this);
-        if (!view_->glError_.isEmpty()) {
-            painter.fillRect(rect(), palette().window());
-            painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, view_->glError_);
-            return;
-        }
-        if (view_->options_.legend && view_->options_.overlays)
-            drawLegend(painter, rect(), view_->options_);
-        if (!view_->hint_.isEmpty()) drawHint(painter);
-        if (!view_->foldLine_.isNull()) drawFoldLine(painter);
-    }
-
-  private:
-    // A dark rounded box, bottom centre, wrapped to at most 80 % of the view's width.
-    void drawHint(QPainter& painter) {
-        const int margin = 12, pad = 8;
-        const int maxWidth = std::max(80, width() * 8 / 10);
-        const int flags = Qt::AlignCenter | Qt::TextWordWrap;
-        const QRect text = painter.fontMetrics().boundingRect(QRect(0, 0, maxWidth, height()),
-                                                              flags, view_->hint_);
-        QRect box(0, 0, text.width() + 2 * pad, text.height() + 2 * pad);
-        box.moveCenter(QPoint(width() / 2, height() - margin - box.height() / 2));
-        painter.setRenderHint(QPainter::Antialiasing);
-        painter.setPen(Qt::NoPen);
-        painter.setBrush(QColor(20, 20, 24, 190));
-        painter.drawRoundedRect(box, 6, 6);
-        painter.setPen(Qt::white);
-        painter.drawText(box.adjusted(pad, pad, -pad, -pad), flags, view_->hint_);
-    }
-
-    // Dashed, dark under light, so that it shows on white paper and on the dark desk.
-    void drawFoldLine(QPainter& painter) {
-        const QLine& line = view_->foldLine_;
-        painter.setRenderHint(QPainter::Antialiasing);
-        painter.setPen(QPen(QColor(20, 20, 24, 200), 4, Qt::SolidLine, Qt::RoundCap));
-        painter.drawLine(line);
-        painter.setPen(QPen(QColor(255, 200, 40), 2, Qt::DashLine, Qt::RoundCap));
-        painter.drawLine(line);
-        painter.setBrush(QColor(255, 200, 40));
-        painter.setPen(Qt::NoPen);
-        for (const QPoint& end : {line.p1(), line.p2()}) painter.drawEllipse(end, 4, 4);
-    }
-
-  private:
-    Viewport* view_;
-};
-
-Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent), overlay_(new Overlay(this)) {
-    setFormat(requiredFormat());
-    setMinimumSize(160, 120);
-    options_.pins = true; // the artist sees where the sheet is held
+// A dark rounded box, bottom centre, wrapped to at most 80 % of the view's width.
+void drawHint(QPainter& painter, const QRect& area, const QString& hint) {
+    const int margin = 12, pad = 8;
+    const int maxWidth = std::max(80, area.width() * 8 / 10);
+    const int flags = Qt::AlignCenter | Qt::TextWordWrap;
+    const QRect text =
+        painter.fontMetrics().boundingRect(QRect(0, 0, maxWidth, area.height()), flags, hint);
+    QRect box(0, 0, text.width() + 2 * pad, text.height() + 2 * pad);
+    box.moveCenter(QPoint(area.width() / 2, area.height() - margin - box.height() / 2));
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(20, 20, 24, 190));
+    painter.drawRoundedRect(box, 6, 6);
+    painter.setPen(Qt::white);
+    painter.drawText(box.adjusted(pad, pad, -pad, -pad), flags, hint);
 }
 
-void Viewport::resizeEvent(QResizeEvent* event) {
-    QOpenGLWidget::resizeEvent(event);
-    overlay_->setGeometry(rect());
+// Dashed, dark under light, so that it shows on white paper and on the dark desk.
+void drawFoldLine(QPainter& painter, const QLine& line) {
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(QPen(QColor(20, 20, 24, 200), 4, Qt::SolidLine, Qt::RoundCap));
+    painter.drawLine(line);
+    painter.setPen(QPen(QColor(255, 200, 40), 2, Qt::DashLine, Qt::RoundCap));
+    painter.drawLine(line);
+    painter.setBrush(QColor(255, 200, 40));
+    painter.setPen(Qt::NoPen);
+    for (const QPoint& end : {line.p1(), line.p2()}) painter.drawEllipse(end, 4, 4);
+}
+
+} // namespace
+
+Viewport::Viewport(QWidget* parent) : QWidget(parent), window_(new ViewportWindow(this)) {
+    setMinimumSize(160, 120);
+    options_.pins = true; // the artist sees where the sheet is held
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(QWidget::createWindowContainer(window_, this));
 }
 
 Viewport::~Viewport() {
     releaseGl();
-    // ~QOpenGLWidget destroys the context after this object's own part is gone, and the
-    // automatic disconnect of a receiver comes later still (in ~QObject): cut the
-    // aboutToBeDestroyed connection here, or releaseGl would run on a destroyed Viewport.
-    if (context()) disconnect(context(), nullptr, this, nullptr);
+    // The window and its context go with the container, after this object's own part
+    // is gone: cut the aboutToBeDestroyed connection here, or releaseGl would run on a
+    // destroyed Viewport.
+    if (window_->context()) disconnect(window_->context(), nullptr, this, nullptr);
+}
+
+bool Viewport::event(QEvent* event) {
+    // The cursor shows over the window that covers this widget, so it must be set there.
+    if (event->type() == QEvent::CursorChange) window_->setCursor(cursor());
+    return QWidget::event(event);
+}
+
+QWindow* Viewport::glWindow() const {
+    return window_;
+}
+
+void Viewport::redraw() {
+    // An update asked of a window not yet shown arrives before its context exists, and
+    // QOpenGLWindow would paint without one; the first expose paints anyway.
+    if (window_->isExposed()) window_->update();
 }
 
 QSurfaceFormat Viewport::requiredFormat() {
@@ -97,43 +91,64 @@ QSurfaceFormat Viewport::requiredFormat() {
     return f;
 }
 
+QSurfaceFormat Viewport::viewFormat() {
+    // Drawn by the CPU, 4× multisampling halves the frame rate (bench_render viewport
+    // under Xvfb with llvmpipe: 20 ms a frame without, 41 ms with); there the edges
+    // go without it.
+    static const bool software = [] {
+        QOffscreenSurface surface;
+        surface.setFormat(requiredFormat());
+        surface.create();
+        QOpenGLContext context;
+        context.setFormat(requiredFormat());
+        if (!context.create() || !context.makeCurrent(&surface)) return false;
+        const auto* name =
+            reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER));
+        const QByteArray renderer = QByteArray(name ? name : "").toLower();
+        context.doneCurrent();
+        return renderer.contains("llvmpipe") || renderer.contains("softpipe") ||
+               renderer.contains("swrast");
+    }();
+    QSurfaceFormat f = requiredFormat();
+    if (software) f.setSamples(0);
+    return f;
+}
+
 void Viewport::releaseGl() {
-    if (!renderer_.initialized() || !context()) return;
-    makeCurrent();
+    if (!renderer_.initialized() || !window_->context()) return;
+    window_->makeCurrent();
     renderer_.release();
-    doneCurrent();
+    window_->doneCurrent();
 }
 
 void Viewport::setSnapshot(std::shared_ptr<const SheetSnapshot> snapshot) {
     snapshot_ = std::move(snapshot);
-    update();
+    redraw();
 }
 
 void Viewport::setCamera(const OrbitCamera& camera) {
     camera_ = camera;
-    update();
+    redraw();
 }
 
 void Viewport::setFoldLine(const QLine& line) {
     foldLine_ = line;
-    overlay_->update();
+    redraw();
 }
 
 void Viewport::setHint(const QString& hint) {
     hint_ = hint;
-    overlay_->update();
+    redraw();
 }
 
 void Viewport::setRenderOptions(const RenderOptions& options) {
     options_ = options;
-    update();
-    overlay_->update();
+    redraw();
 }
 
-void Viewport::initializeGL() {
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl,
+void Viewport::initializeGl(QOpenGLContext* ctx) {
+    connect(ctx, &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl,
             Qt::UniqueConnection);
-    QOpenGLContext* ctx = context();
     std::string missing;
     const bool loaded = gl_.load(
         [ctx](const char* name) { return reinterpret_cast<void*>(ctx->getProcAddress(name)); },
@@ -145,13 +160,12 @@ void Viewport::initializeGL() {
     }
     QString error;
     if (!renderer_.initialize(gl_, &error)) glError_ = error;
-    overlay_->update();
 }
 
-void Viewport::paintGL() {
+void Viewport::paintGl(unsigned framebuffer) {
     QElapsedTimer timer;
     timer.start();
-    const qreal dpr = devicePixelRatioF();
+    const qreal dpr = window_->devicePixelRatio();
     const int w = static_cast<int>(width() * dpr), h = static_cast<int>(height() * dpr);
     if (renderer_.initialized() && snapshot_) {
         // The editor draws at most kInteractiveTriangles: a crumpled sheet is drawn one
@@ -161,9 +175,53 @@ void Viewport::paintGL() {
         drawn.subdivision =
             subdivisionWithin(options_.subdivision, snapshot_->tris.size(), kInteractiveTriangles);
         renderer_.render(*snapshot_, camera_, drawn, w, h);
+    } else {
+        QOpenGLFunctions* f = QOpenGLContext::currentContext()->functions();
+        f->glClearColor(0.2f, 0.2f, 0.22f, 1.0f);
+        f->glClear(GL_COLOR_BUFFER_BIT);
     }
+    // QPainter draws the legend, the hint and the fold line over the picture, into the
+    // same framebuffer. It leaves its GL state behind; the renderer sets all it needs.
+    const bool overlay = !glError_.isEmpty() || !hint_.isEmpty() || !foldLine_.isNull() ||
+                         (options_.legend && options_.overlays);
+    if (overlay) {
+        QOpenGLPaintDevice device(w, h);
+        device.setDevicePixelRatio(dpr);
+        QPainter painter(&device);
+        paintOverlay(painter, rect());
+    }
+    QOpenGLContext::currentContext()->functions()->glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     lastFrameSeconds_ = timer.nsecsElapsed() * 1e-9;
-    emit frameDrawn();
+}
+
+void Viewport::paintOverlay(QPainter& painter, const QRect& area) const {
+    if (!glError_.isEmpty()) {
+        painter.fillRect(area, palette().window());
+        painter.setPen(palette().windowText().color());
+        painter.drawText(area, Qt::AlignCenter | Qt::TextWordWrap, glError_);
+        return;
+    }
+    if (options_.legend && options_.overlays) drawLegend(painter, area, options_);
+    if (!hint_.isEmpty()) drawHint(painter, area, hint_);
+    if (!foldLine_.isNull()) drawFoldLine(painter, foldLine_);
+}
+
+QImage Viewport::grabFramebuffer() {
+    if (!window_->isValid()) return {};
+    window_->makeCurrent();
+    const qreal dpr = window_->devicePixelRatio();
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
+    format.setSamples(requiredFormat().samples()); // as OSMesa and the exports draw it
+    QOpenGLFramebufferObject fbo(static_cast<int>(width() * dpr), static_cast<int>(height() * dpr),
+                                 format);
+    fbo.bind();
+    paintGl(fbo.handle());
+    QImage picture = fbo.toImage();
+    fbo.release();
+    window_->doneCurrent();
+    picture.setDevicePixelRatio(dpr);
+    return picture;
 }
 
 } // namespace pf

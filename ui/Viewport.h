@@ -6,15 +6,23 @@
 #include "SheetRenderer.h"
 #include "SheetSnapshot.h"
 
-#include <QOpenGLWidget>
+#include <QImage>
+#include <QSurfaceFormat>
+#include <QWidget>
 #include <memory>
+
+class QOpenGLContext;
 
 namespace pf {
 
-// The editor's 3D view: draws the newest snapshot with the shared SheetRenderer.
-// GL is resolved through QOpenGLContext::getProcAddress into the same function
-// table the headless path fills from OSMesa.
-class Viewport : public QOpenGLWidget {
+class ViewportWindow;
+
+// The editor's 3D view: draws the newest snapshot with the shared SheetRenderer, in a
+// native GL window (ViewportWindow) that fills it, with the legend, the hint and the
+// fold line painted over the picture. Input that reaches the window is delivered to
+// this widget. GL is resolved through QOpenGLContext::getProcAddress into the same
+// function table the headless path fills from OSMesa.
+class Viewport : public QWidget {
     Q_OBJECT
 
   public:
@@ -27,6 +35,9 @@ class Viewport : public QOpenGLWidget {
 
     // The surface format every viewport asks for: GL 3.3 core, depth, stencil, 4× MSAA.
     static QSurfaceFormat requiredFormat();
+    // What the view draws with: the same, without MSAA where GL is drawn by the CPU.
+    // Needs the application.
+    static QSurfaceFormat viewFormat();
 
     void setSnapshot(std::shared_ptr<const SheetSnapshot> snapshot);
     const SheetSnapshot* snapshot() const { return snapshot_.get(); }
@@ -44,25 +55,33 @@ class Viewport : public QOpenGLWidget {
     void setFoldLine(const QLine& line);
     const QLine& foldLine() const { return foldLine_; }
 
+    // The native window the view draws in (input that reaches it comes to this widget).
+    QWindow* glWindow() const;
+
     // Empty if GL came up; otherwise why not.
     QString glError() const { return glError_; }
-    // Seconds the last paintGL took.
+    // Seconds the last frame took to draw.
     double lastFrameSeconds() const { return lastFrameSeconds_; }
+    // The picture the view shows, drawn afresh with 4× MSAA as the headless renderer
+    // draws it (empty before GL is up).
+    QImage grabFramebuffer();
 
   signals:
     void frameDrawn();
 
   protected:
-    void initializeGL() override;
-    void paintGL() override;
-
-  protected:
-    void resizeEvent(QResizeEvent* event) override;
+    bool event(QEvent* event) override;
 
   private:
+    friend class ViewportWindow;
+    void initializeGl(QOpenGLContext* context);
+    // Draws the frame into `framebuffer` (bound), at the window's size in pixels.
+    void paintGl(unsigned framebuffer);
+    void paintOverlay(QPainter& painter, const QRect& area) const;
     void releaseGl();
-    class Overlay;
-    Overlay* overlay_ = nullptr; // the legend, the hint and GL errors, painted by a child widget
+    void redraw();
+
+    ViewportWindow* window_ = nullptr; // owned by its container, a child of this widget
 
     GlFunctions gl_;
     SheetRenderer renderer_;

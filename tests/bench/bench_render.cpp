@@ -75,7 +75,7 @@ int viewport() {
     qint64 last = -1;
     // Each swapped frame: advance the crumpling sheet by one 60 Hz frame (4 steps) and ask
     // for the next frame, so the viewport redraws as fast as it can.
-    QObject::connect(&view, &QOpenGLWidget::frameSwapped, [&] {
+    QObject::connect(&view, &Viewport::frameDrawn, [&] {
         const qint64 now = clock.nsecsElapsed();
         if (last >= 0) frameGaps.push_back((now - last) * 1e-9);
         last = now;
