@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include "ActionTexts.h"
+#include "AllocatorTuning.h"
 #include "ChartBrowser.h"
 #include "EditorDialogs.h"
 #include "EditorParameters.h"
@@ -58,6 +59,7 @@ const Overlay kOverlayBits[] = {OverlaySpringKinds, OverlayBreakProbability, Ove
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("MainWindow"));
+    keepFreedHeapForTheNextFrame();
     const World first = sceneWorld(scene_);
     sim_ = std::make_unique<SimulationThread>(first);
 
