@@ -1,6 +1,9 @@
-#include "ViewportWindow.h"
-
+// clang-format off
+// Viewport.h first: GlFunctions.h takes GL's types from glcorearb.h, which leaves out
+// the GL 1.1 ones once <QOpenGLWindow> has brought in the system's gl.h.
 #include "Viewport.h"
+#include "ViewportWindow.h"
+// clang-format on
 
 #include <QCoreApplication>
 #include <QMouseEvent>
