@@ -7,9 +7,6 @@
 #include "Viewport.h"
 
 #include <QMouseEvent>
-#include <QOffscreenSurface>
-#include <QOpenGLContext>
-#include <QOpenGLFunctions>
 #include <QTest>
 #include <QWindow>
 
@@ -34,19 +31,6 @@ class MouseLog : public QObject {
         return false;
     }
 };
-
-QByteArray glRenderer() {
-    QOffscreenSurface surface;
-    surface.setFormat(Viewport::requiredFormat());
-    surface.create();
-    QOpenGLContext context;
-    context.setFormat(Viewport::requiredFormat());
-    if (!context.create() || !context.makeCurrent(&surface)) return {};
-    const QByteArray name(
-        reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER)));
-    context.doneCurrent();
-    return name;
-}
 
 } // namespace
 
@@ -152,7 +136,7 @@ class TestViewport : public QObject {
     // 4× MSAA halves the frame rate where the CPU draws: the view goes without it there,
     // and keeps it on a GPU.
     void multisamplingOnlyWhereAGpuDraws() {
-        const QByteArray renderer = glRenderer().toLower();
+        const QByteArray renderer = Viewport::glRenderer().toLower();
         QVERIFY(!renderer.isEmpty());
         const bool software = renderer.contains("llvmpipe") || renderer.contains("softpipe") ||
                               renderer.contains("swrast");

@@ -75,12 +75,6 @@ QWindow* Viewport::glWindow() const {
     return window_;
 }
 
-void Viewport::redraw() {
-    // An update asked of a window not yet shown arrives before its context exists, and
-    // QOpenGLWindow would paint without one; the first expose paints anyway.
-    if (window_->isExposed()) window_->update();
-}
-
 QSurfaceFormat Viewport::requiredFormat() {
     QSurfaceFormat f;
     f.setVersion(3, 3);
@@ -91,21 +85,25 @@ QSurfaceFormat Viewport::requiredFormat() {
     return f;
 }
 
+QByteArray Viewport::glRenderer() {
+    QOffscreenSurface surface;
+    surface.setFormat(requiredFormat());
+    surface.create();
+    QOpenGLContext context;
+    context.setFormat(requiredFormat());
+    if (!context.create() || !context.makeCurrent(&surface)) return {};
+    const auto* name = reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER));
+    const QByteArray renderer(name ? name : "");
+    context.doneCurrent();
+    return renderer;
+}
+
 QSurfaceFormat Viewport::viewFormat() {
     // Drawn by the CPU, 4× multisampling halves the frame rate (bench_render viewport
     // under Xvfb with llvmpipe: 20 ms a frame without, 41 ms with); there the edges
     // go without it.
     static const bool software = [] {
-        QOffscreenSurface surface;
-        surface.setFormat(requiredFormat());
-        surface.create();
-        QOpenGLContext context;
-        context.setFormat(requiredFormat());
-        if (!context.create() || !context.makeCurrent(&surface)) return false;
-        const auto* name =
-            reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER));
-        const QByteArray renderer = QByteArray(name ? name : "").toLower();
-        context.doneCurrent();
+        const QByteArray renderer = glRenderer().toLower();
         return renderer.contains("llvmpipe") || renderer.contains("softpipe") ||
                renderer.contains("swrast");
     }();
@@ -123,27 +121,27 @@ void Viewport::releaseGl() {
 
 void Viewport::setSnapshot(std::shared_ptr<const SheetSnapshot> snapshot) {
     snapshot_ = std::move(snapshot);
-    redraw();
+    window_->update();
 }
 
 void Viewport::setCamera(const OrbitCamera& camera) {
     camera_ = camera;
-    redraw();
+    window_->update();
 }
 
 void Viewport::setFoldLine(const QLine& line) {
     foldLine_ = line;
-    redraw();
+    window_->update();
 }
 
 void Viewport::setHint(const QString& hint) {
     hint_ = hint;
-    redraw();
+    window_->update();
 }
 
 void Viewport::setRenderOptions(const RenderOptions& options) {
     options_ = options;
-    redraw();
+    window_->update();
 }
 
 void Viewport::initializeGl(QOpenGLContext* ctx) {
@@ -190,6 +188,7 @@ void Viewport::paintGl(unsigned framebuffer) {
         QPainter painter(&device);
         paintOverlay(painter, rect());
     }
+    // QPainter may leave another framebuffer bound; the caller reads or swaps this one.
     QOpenGLContext::currentContext()->functions()->glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     lastFrameSeconds_ = timer.nsecsElapsed() * 1e-9;
 }

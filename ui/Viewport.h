@@ -38,6 +38,8 @@ class Viewport : public QWidget {
     // What the view draws with: the same, without MSAA where GL is drawn by the CPU.
     // Needs the application.
     static QSurfaceFormat viewFormat();
+    // GL_RENDERER of a context made with requiredFormat(); empty if none can be made.
+    static QByteArray glRenderer();
 
     void setSnapshot(std::shared_ptr<const SheetSnapshot> snapshot);
     const SheetSnapshot* snapshot() const { return snapshot_.get(); }
@@ -79,7 +81,6 @@ class Viewport : public QWidget {
     void paintGl(unsigned framebuffer);
     void paintOverlay(QPainter& painter, const QRect& area) const;
     void releaseGl();
-    void redraw();
 
     ViewportWindow* window_ = nullptr; // owned by its container, a child of this widget
 
