@@ -31,6 +31,32 @@ double contraction(const Sheet& sheet, Index spring) {
     return 1.0 - (x[S.a[spring]] - x[S.b[spring]]).norm() / S.rest[spring];
 }
 
+// The contraction Eq. 10 reads (docs/model.md, "What a stiff paper's break reads").
+// The paper reads the chord: its soft springs shorten where the paper buckles finer than
+// the mesh. Paper with its real stretch stiffness (xpbd) keeps every chord at its length
+// and bends instead, so there the contraction is read on the arc: paper whose normals
+// turn by θ between i and j, and whose arc between them is as long as the chord says,
+// spans only sin(θ/2)/(θ/2) of it. A flat edge reads the same either way.
+struct ContractionReading {
+    const std::vector<Vec3>& normals;
+    bool onTheArc;
+
+    double of(const Sheet& sheet, Index spring) const {
+        const double chord = contraction(sheet, spring);
+        if (!onTheArc) return chord;
+        const auto& S = sheet.springs;
+        const double turn =
+            std::acos(std::clamp(normals[S.a[spring]].dot(normals[S.b[spring]]), -1.0, 1.0));
+        const double half = 0.5 * turn;
+        const double spanned = half > 1e-8 ? std::sin(half) / half : 1.0;
+        return 1.0 - (1.0 - chord) * spanned;
+    }
+};
+
+ContractionReading readingFor(const SimParams& params, const std::vector<Vec3>& normals) {
+    return {normals, params.integrator == "xpbd"};
+}
+
 } // namespace
 
 double breakOffset(double l, double l0, double psi) {
@@ -274,7 +300,8 @@ namespace {
 
 // A breakable compressed edge between two triangles, not held at both ends and long
 // enough to split: one that Eq. 10 applies to.
-bool breakCandidate(const Sheet& sheet, Index spring, double spacing) {
+bool breakCandidate(const Sheet& sheet, Index spring, double spacing,
+                    const ContractionReading& reading) {
     if (!splittable(sheet, spring)) return false;
     const auto& S = sheet.springs;
     const auto& V = sheet.verts;
@@ -284,19 +311,21 @@ bool breakCandidate(const Sheet& sheet, Index spring, double spacing) {
     // squeezed to nothing (pins can hold i on j) is not a candidate: its crease would
     // remember a rest length of zero.
     const double l = (V.x[i] - V.x[j]).norm();
-    if (!(l > 0.0 && l < S.rest[spring])) return false;
+    if (!(l > 0.0) || !(reading.of(sheet, spring) > 0.0)) return false;
     return leavesMass(sheet, spring) && keepsCreaseSpacing(sheet, spring, spacing) &&
            splitsIntoProperTriangles(sheet, spring);
 }
 
-double candidateProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
+double candidateProbability(const Sheet& sheet, const ContractionReading& reading, Index spring,
                             double phi) {
+    const auto& normals = reading.normals;
     const auto& S = sheet.springs;
     const auto& V = sheet.verts;
     const Index i = S.a[spring], j = S.b[spring];
     const Index r = sheet.oppositeVertex(S.faces[spring][0], i, j);
     const Index lv = sheet.oppositeVertex(S.faces[spring][1], i, j);
-    return breakProbability((V.x[i] - V.x[j]).norm(), S.rest[spring], (V.x[r] - V.x[lv]).norm(),
+    const double l = S.rest[spring] * (1.0 - reading.of(sheet, spring));
+    return breakProbability(l, S.rest[spring], (V.x[r] - V.x[lv]).norm(),
                             normals[i].dot(normals[j]), normals[r].dot(normals[lv]), phi);
 }
 
@@ -304,8 +333,9 @@ double candidateProbability(const Sheet& sheet, const std::vector<Vec3>& normals
 
 double springBreakProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
                               const SimParams& params) {
-    return breakCandidate(sheet, spring, params.material.creaseSpacing)
-               ? candidateProbability(sheet, normals, spring, params.phi)
+    const ContractionReading reading = readingFor(params, normals);
+    return breakCandidate(sheet, spring, params.material.creaseSpacing, reading)
+               ? candidateProbability(sheet, reading, spring, params.phi)
                : 0.0;
 }
 
@@ -346,16 +376,17 @@ int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t s
     // Springs appended by a break in this pass are not visited until the next step.
     const Index count = sheet.springs.size();
     scratch.probability.assign(static_cast<std::size_t>(count), 0.0f);
+    const ContractionReading reading = readingFor(params, normals);
     for (Index s = 0; s < count; ++s) {
-        if (!breakCandidate(sheet, s, params.material.creaseSpacing)) continue;
+        if (!breakCandidate(sheet, s, params.material.creaseSpacing, reading)) continue;
         // A triangle split in this pass may have the new vertex opposite, which has no
         // normal yet: its edges wait for the next step (and show 0 until then).
         const auto& faces = sheet.springs.faces[s];
         if (scratch.touched[faces[0]] || scratch.touched[faces[1]]) continue;
-        const double P = candidateProbability(sheet, normals, s, params.phi);
+        const double P = candidateProbability(sheet, reading, s, params.phi);
         scratch.probability[s] = static_cast<float>(P);
         double& peak = sheet.springs.peakContraction[s];
-        const double now = contraction(sheet, s);
+        const double now = reading.of(sheet, s);
         const double growth = now - peak;
         if (!(growth > 0.0)) continue;
         peak = now;

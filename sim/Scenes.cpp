@@ -1,5 +1,6 @@
 #include "Scenes.h"
 
+#include "FoldPlan.h"
 #include "Rng.h"
 #include "SheetBuilder.h"
 
@@ -86,31 +87,18 @@ World compressScene(const SceneOptions& options) {
 
 World foldScene(const SceneOptions& options) {
     World w = baseWorld("fold", options, 0.0);
-    const SheetSpec spec = sceneSpec(options);
-    // The far short edge is lifted and turned over the middle of the sheet onto the near
-    // half in 1.5 s (about the line across the middle, 3 mm up, so that it comes down
-    // 6 mm above the near edge), held there while the sphere rolls along the fold and
-    // presses it to 4 mm, and let go once the sphere has lifted off.
-    constexpr double kCarry = 1.5, kRelease = 2.7;
-    PinGroup edge;
-    for (int c = 0; c < spec.columns; ++c)
-        edge.vertices.push_back(vertexAt(spec, c, spec.rows - 1));
-    for (Index i : edge.vertices) w.sheet.verts.pinned[i] = 1;
-    edge.pivot = Vec3(0.0, 0.003, 0.0);
-    edge.axis = -Vec3::UnitX(); // from +z over the top to -z
-    edge.turnRate = std::numbers::pi / kCarry;
-    edge.until = kCarry;
-    edge.release = kRelease;
-    w.script.pins.push_back(edge);
-    const double R = 0.03, reach = 0.5 * spec.width + R + 0.015, pressed = R + 0.004;
-    w.sphere.radius = R;
-    w.script.sphereKeys = {{0.0, Vec3(-reach, 0.3, 0.0)},
-                           {1.55, Vec3(-reach, 0.3, 0.0)},
-                           {1.6, Vec3(-reach, pressed, 0.0)},
-                           {2.6, Vec3(reach, pressed, 0.0)},
-                           {2.65, Vec3(reach, 0.3, 0.0)}};
-    w.sphere.center = w.script.sphereKeys.front().center;
-    w.sphere.active = true;
+    // The far half is folded over onto the near one across the middle as the Fold tool
+    // folds (sim/FoldPlan.h): carried round as a hand carries it, held pressed flat, and
+    // let go; the crease forms in the band along the line, where the paper bends.
+    // A sphere rolled along the fold pressed a crease into the soft springs of the
+    // paper's model, but stiff paper stands a loose fold up in a loop centimetres tall,
+    // which a sphere rolled along it pushes aside rather than presses.
+    const double reach = 0.5 * options.width + 0.01;
+    FoldPlan plan = planFold(w, {Vec3(-reach, 0.0, 0.0), Vec3(reach, 0.0, 0.0)});
+    for (PinGroup& g : plan.motions) {
+        for (Index i : g.vertices) w.sheet.verts.pinned[i] = 1;
+        w.script.pins.push_back(std::move(g));
+    }
     return w;
 }
 

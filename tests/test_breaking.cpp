@@ -1,6 +1,8 @@
 // Eq. 10 and Eq. 11 against hand-computed values on a constructed configuration.
 #include "Breaking.h"
 #include "Normals.h"
+#include "Params.h"
+#include "SheetBuilder.h"
 #include "SheetValidation.h"
 #include "TestSheets.h"
 
@@ -40,6 +42,68 @@ class TestBreaking : public QObject {
         QCOMPARE(breakProbability(0.8, 1.0, 0.8, 1.0, 1.0, 1.0), 0.0);
         // A stretched spring never breaks.
         QCOMPARE(breakProbability(1.1, 1.0, 0.8, 0.0, 0.0, 0.5), 0.0);
+    }
+
+    void stiffPaperReadsTheContractionOnTheArc() {
+        // A 4 cm square folded by `fold` along its middle column, each half turned
+        // rigidly, so that every chord keeps its rest length: the paper's soft springs
+        // would read no contraction at all. Stiff paper (xpbd) reads the arc: the edge
+        // from the left half onto the fold line, whose normals turn by θ, counts as
+        // 1 - sin(θ/2)/(θ/2) shorter (docs/model.md, "What a stiff paper's break reads").
+        SheetSpec spec;
+        spec.width = spec.length = 0.04;
+        spec.columns = spec.rows = 5;
+        const auto foldedBy = [&](double fold) {
+            Sheet s = buildRectangleSheet(spec);
+            for (Index i = 0; i < s.verts.size(); ++i) {
+                const double across = s.verts.X[i].x();
+                if (across > 0.0)
+                    s.verts.x[i] =
+                        Vec3(across * std::cos(fold), across * std::sin(fold), s.verts.x[i].z());
+            }
+            return s;
+        };
+        const Index left = 2 * spec.columns + 1, onTheFold = 2 * spec.columns + 2;
+        SimParams stiff;
+        stiff.integrator = "xpbd";
+        stiff.phi = 0.5;
+        SimParams soft = stiff;
+        soft.integrator = "jacobi";
+        double previous = 0.0;
+        for (const double fold : {0.0, 0.5, 1.5, 2.5}) {
+            const Sheet s = foldedBy(fold);
+            Index spring = kNone;
+            for (Index k = 0; k < s.springs.size(); ++k)
+                if ((s.springs.a[k] == left && s.springs.b[k] == onTheFold) ||
+                    (s.springs.a[k] == onTheFold && s.springs.b[k] == left))
+                    spring = k;
+            QVERIFY(spring != kNone);
+            QVERIFY(canBreak(s, spring));
+            std::vector<Vec3> n;
+            computeVertexNormals(s, n);
+            const auto& x = s.verts.x;
+            const double l0 = s.springs.rest[spring];
+            QVERIFY(std::abs((x[left] - x[onTheFold]).norm() - l0) < 1e-15);
+            const double half = 0.5 * std::acos(std::clamp(n[left].dot(n[onTheFold]), -1.0, 1.0));
+            const double spanned = half > 0.0 ? std::sin(half) / half : 1.0;
+            const Index r = s.oppositeVertex(s.springs.faces[spring][0], left, onTheFold);
+            const Index l = s.oppositeVertex(s.springs.faces[spring][1], left, onTheFold);
+            const double expected =
+                breakProbability(l0 * spanned, l0, (x[r] - x[l]).norm(), n[left].dot(n[onTheFold]),
+                                 n[r].dot(n[l]), stiff.phi);
+            const double P = springBreakProbability(s, n, spring, stiff);
+            QVERIFY2(
+                std::abs(P - expected) < 1e-12,
+                qPrintable(
+                    QStringLiteral("fold %1: P %2, by hand %3").arg(fold).arg(P).arg(expected)));
+            // Flat, both readings agree: nothing; folded, the soft paper still reads nothing.
+            QCOMPARE(springBreakProbability(s, n, spring, soft), 0.0);
+            if (fold == 0.0)
+                QCOMPARE(P, 0.0);
+            else
+                QVERIFY(P > previous);
+            previous = P;
+        }
     }
 
     void probabilityPerGrowthComposes() {

@@ -1,5 +1,6 @@
 // Mesh invariants under breaking, and recovery as the exact inverse of a break.
 #include "Breaking.h"
+#include "FoldPlan.h"
 #include "Hinges.h"
 #include "Normals.h"
 #include "Rng.h"
@@ -266,12 +267,16 @@ class TestTopology : public QObject {
             QVERIFY(std::abs(maxX - minX - 0.15) < 1e-12 && std::abs(maxZ - minZ - 0.20) < 1e-12);
             for (const PinGroup& g : w.script.pins)
                 for (Index i : g.vertices) {
-                    // Pins sit on the sheet's corners (drape), short edges (compress,
-                    // fold) or whole rim (crumple-cycles).
+                    // Pins sit on the sheet's corners (drape), short edges (compress),
+                    // whole rim (crumple-cycles) or on the half folded over the middle,
+                    // clear of the band where the crease forms (fold).
                     const Vec2& X = s.verts.X[i];
                     const bool shortEdge = std::abs(std::abs(X.y()) - 0.10) < 1e-12;
                     const bool longEdge = std::abs(std::abs(X.x()) - 0.075) < 1e-12;
-                    QVERIFY2(shortEdge || (name == "crumple-cycles" && longEdge), name.c_str());
+                    const bool flap = std::abs(X.y()) > kFoldBand;
+                    QVERIFY2(shortEdge || (name == "crumple-cycles" && longEdge) ||
+                                 (name == "fold" && flap),
+                             name.c_str());
                 }
         }
         o.width = 0.001;
