@@ -14,7 +14,8 @@ struct Outcome {
     long inserted = 0; // vertices added by breaking
 };
 
-Outcome runSeeds(const char* scene, double phi, double psi, int seeds, int steps) {
+Outcome runSeeds(const char* scene, double phi, double psi, int seeds, int steps,
+                 const char* integrator = "jacobi") {
     Outcome total;
     for (int seed = 1; seed <= seeds; ++seed) {
         SceneOptions o;
@@ -23,6 +24,7 @@ Outcome runSeeds(const char* scene, double phi, double psi, int seeds, int steps
         const Index v0 = w.sheet.verts.size();
         w.params.phi = phi;
         w.params.psi = psi;
+        w.params.integrator = integrator;
         Simulation sim(std::move(w));
         for (int k = 0; k < steps; ++k)
             if (sim.step() != StepStatus::Ok) break;
@@ -46,6 +48,20 @@ class TestTrends : public QObject {
         qInfo("press, 4 seeds, 1 s: breaks at phi=0: %ld, at phi=1: %ld", soft.breaks,
               stiff.breaks);
         QVERIFY(soft.breaks >= 20);
+        QVERIFY(stiff.breaks < soft.breaks / 2);
+    }
+
+    void stiffPaperKeepsTheFragilityTrend() {
+        // Fig. 10 with office paper's real stiffness (xpbd): a sheet pushed on the desk
+        // slides or arches and hardly breaks, so the trend is measured where stiff paper
+        // does crease, in the first gather of crumple-cycles (2.5 s). Eq. 10 reads the
+        // arc there (docs/model.md).
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
+        const Outcome soft = runSeeds("crumple-cycles", 0.0, 0.25, 2, 600, "xpbd");
+        const Outcome stiff = runSeeds("crumple-cycles", 1.0, 0.25, 2, 600, "xpbd");
+        qInfo("xpbd, crumple-cycles, 2 seeds, 2.5 s: breaks at phi=0: %ld, at phi=1: %ld",
+              soft.breaks, stiff.breaks);
+        QVERIFY(soft.breaks >= 100);
         QVERIFY(stiff.breaks < soft.breaks / 2);
     }
 
