@@ -43,6 +43,10 @@ StabilityResult probeStability(const StabilityCase& c) {
     w.params.dt = c.dt;
     w.params.breaking = false;
     for (double& k : w.params.stiffness) k *= c.stiffnessScale;
+    // xpbd takes its stretch stiffness from the material, E·t: the same stiffness as the
+    // springs' here, so that a row of the map means one stiffness for every method
+    // (bending keeps the material's D).
+    w.params.material.stretchStiffness = w.params.stiffnessOf(SpringKind::Structural);
 
     StabilityResult r;
     double lightest = std::numeric_limits<double>::infinity();

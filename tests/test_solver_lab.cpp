@@ -145,6 +145,28 @@ class TestSolverLab : public QObject {
         QVERIFY(!stable("drape", "jacobi", 2, true, 1.0 / 30, 10000.0));
     }
 
+    void xpbdSurvivesEveryStepAtPapersStiffness() {
+        // The map's rows are the springs' stiffness; xpbd takes it as E·t (100 N/m × the
+        // scale: ×100 is 10⁴ N/m, a fifth of tissue's; ×10⁴ is 10⁶ N/m, near card's).
+        for (const char* scene : {"drape", "compress"})
+            for (double k : {100.0, 10000.0})
+                for (double dt : {1.0 / 480, 1.0 / 7680})
+                    QVERIFY2(stable(scene, "xpbd", 0, true, dt, k),
+                             qPrintable(QStringLiteral("%1 h=%2 k×%3")
+                                            .arg(QLatin1String(scene))
+                                            .arg(dt)
+                                            .arg(k)));
+        QVERIFY(stable("drape", "xpbd", 0, true, 1.0 / 30, 10000.0));
+        // At 30 steps a second the edges `compress` drives together are crushed (86-96 %
+        // shorter) before the sheet can arch out of their way, at every stiffness.
+        QVERIFY(!stable("compress", "xpbd", 0, true, 1.0 / 30, 100.0));
+        QVERIFY(!stable("compress", "xpbd", 0, true, 1.0 / 30, 10000.0));
+        // Softer than any paper (E·t = 100 N/m with office paper's D) the fast projection,
+        // which pulls every stretched edge back to its rest length, pumps energy into the
+        // sheet at small steps (without the projection it does not: docs/solver-lab.md).
+        QVERIFY(!stable("compress", "xpbd", 0, true, 1.0 / 1920, 1.0));
+    }
+
     void exactBackwardEulerNeverFails() {
         for (const char* scene : {"compress", "drape"})
             for (double k : kStiffness)
