@@ -23,10 +23,14 @@ struct Method {
 };
 
 constexpr Method kMethods[] = {
-    {"jacobi-0", "jacobi", 0, true},       {"jacobi-0-unclamped", "jacobi", 0, false},
-    {"jacobi-1", "jacobi", 1, true},       {"jacobi-1-unclamped", "jacobi", 1, false},
-    {"jacobi-2", "jacobi", 2, true},       {"jacobi-scalar-1", "jacobi-scalar", 1, true},
-    {"symplectic", "symplectic", 0, true}, {"backward-euler", "backward-euler", 0, true},
+    {"jacobi-0", "jacobi", 0, true},
+    {"jacobi-0-unclamped", "jacobi", 0, false},
+    {"jacobi-1", "jacobi", 1, true},
+    {"jacobi-1-unclamped", "jacobi", 1, false},
+    {"jacobi-2", "jacobi", 2, true},
+    {"jacobi-scalar-1", "jacobi-scalar", 1, true},
+    {"symplectic", "symplectic", 0, true},
+    {"backward-euler", "backward-euler", 0, true},
     {"xpbd", "xpbd", 0, true},
 };
 constexpr const char* kScenes[] = {"drape", "press", "compress"};

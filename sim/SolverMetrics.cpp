@@ -18,6 +18,8 @@ void applySettings(SimParams& p, const SimParams& s) {
     p.gravityOutsideFilter = s.gravityOutsideFilter;
     p.stiffness = s.stiffness;
     p.damping = s.damping;
+    p.material = s.material;
+    p.substeps = s.substeps;
     p.breaking = false;
 }
 

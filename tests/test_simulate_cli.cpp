@@ -414,19 +414,31 @@ class TestSimulateCli : public QObject {
         QVERIFY(csv.open(QIODevice::ReadOnly));
         const QStringList lines =
             QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-        QCOMPARE(lines.size(), 1 + 2 * 6 * 3); // header + 2 scenes × 6 methods × 3 steps
-        QMap<QString, QList<double>> error, fall, dropError, energy;
+        QCOMPARE(lines.size(), 1 + 2 * 7 * 3); // header + 2 scenes × 7 methods × 3 steps
+        QMap<QString, QList<double>> error, fall, dropError, energy, stretch;
+        const QString xpbd = QStringLiteral("xpbd office paper (40 sub-steps)");
         for (const QString& line : lines.mid(1)) {
             const QStringList f = line.split(QLatin1Char(','));
-            QCOMPARE(f.size(), 11);
+            QCOMPARE(f.size(), 14);
+            // xpbd is measured against its own physics, everything else against the springs'.
+            QCOMPARE(f[8], QLatin1String(f[1] == xpbd ? "xpbd" : "backward-euler"));
+            stretch[f[1]] << f[10].toDouble();
             if (f[0] == QLatin1String("drop")) {
-                dropError[f[1]] << f[6].toDouble();
+                dropError[f[1]] << f[7].toDouble();
                 continue;
             }
-            energy[f[1]] << f[9].toDouble();
-            error[f[1]] << f[6].toDouble();
-            fall[f[1]] << f[8].toDouble();
+            energy[f[1]] << f[12].toDouble();
+            error[f[1]] << f[7].toDouble();
+            fall[f[1]] << f[11].toDouble();
         }
+        // Paper with its real stiffness: under 1 % stretch at every step in both scenes,
+        // free fall at g, and it converges toward its own small-step run.
+        QCOMPARE(stretch.value(xpbd).size(), 6);
+        for (double e : stretch.value(xpbd))
+            QVERIFY2(e >= 0.0 && e < 0.01, qPrintable(QString::number(e)));
+        for (double a : fall.value(xpbd)) QVERIFY(std::abs(a - 1.0) < 1e-6);
+        const auto own = error.value(xpbd);
+        QVERIFY(own.size() == 3 && own[0] > own[1] && own[1] > own[2]);
         // The fix moves one sweep toward the front where springs lie along gravity: at
         // every step the tilted drop's trajectory error at least halves, at the same cost.
         const auto paper = dropError.value(QStringLiteral("jacobi K=1 (paper)"));
