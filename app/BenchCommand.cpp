@@ -2,8 +2,10 @@
 
 #include "BuildTuning.h"
 #include "CommandLine.h"
+#include "Integrator.h"
 #include "OutputFile.h"
 #include "PngFile.h"
+#include "ScalingBench.h"
 #include "SheetStats.h"
 #include "SolverMetrics.h"
 
@@ -173,10 +175,32 @@ int runBench(const QStringList& arguments) {
          QStringLiteral("Folder for the CSV and charts (default: bench)."), QStringLiteral("dir"),
          QStringLiteral("bench")},
         {QStringLiteral("quick"),
-         QStringLiteral("Fewer configurations on drape and drop: under a minute, for CI.")},
+         QStringLiteral("Fewer configurations on drape and drop: under a minute, for CI. With "
+                        "--scaling: three small sheets.")},
+        {QStringLiteral("scaling"),
+         QStringLiteral("Instead: the cost per spring against the sheet's size, crumpled, "
+                        "swinging and at rest, and the largest real-time sheet (scaling.csv, "
+                        "scaling.png).")},
+        {QStringLiteral("integrator"),
+         QStringLiteral("With --scaling: the integrator measured (default jacobi)."),
+         QStringLiteral("name"), QStringLiteral("jacobi")},
     });
     if (!parseCommand(parser, arguments)) return 0;
     const bool quick = parser.isSet(QStringLiteral("quick"));
+    if (parser.isSet(QStringLiteral("scaling"))) {
+        ScalingOptions scaling;
+        scaling.quick = quick;
+        scaling.integrator = parser.value(QStringLiteral("integrator"));
+        const auto& names = integratorNames();
+        if (std::find(names.begin(), names.end(), scaling.integrator.toStdString()) == names.end())
+            throw UsageError{
+                QStringLiteral("--integrator: unknown integrator '%1'").arg(scaling.integrator)};
+        scaling.outputDir = parser.value(QStringLiteral("output-dir"));
+        return runScalingBench(scaling);
+    }
+    if (parser.isSet(QStringLiteral("integrator")))
+        throw UsageError{QStringLiteral("--integrator: only with --scaling (the bench runs every "
+                                        "integrator)")};
     const std::vector<double> steps = quick ? std::vector<double>{1.0 / 60, 1.0 / 240, 1.0 / 960}
                                             : std::vector<double>{1.0 / 60,  1.0 / 120, 1.0 / 240,
                                                                   1.0 / 480, 1.0 / 960, 1.0 / 1920};

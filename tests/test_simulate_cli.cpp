@@ -404,6 +404,43 @@ class TestSimulateCli : public QObject {
         }
     }
 
+    void benchScalingChartsCostAgainstSize() {
+        // A benchmark, not a timed test: what is checked is what it reports, not how fast.
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("a timing sweep; run in the Release build");
+        QTemporaryDir dir;
+        const Result r = runPaperfold(
+            {"bench", "--scaling", "--quick", "--integrator", "xpbd", "--output-dir", dir.path()},
+            true);
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY(r.out.startsWith("build: "));
+        QVERIFY(r.out.contains("threads: 1"));
+        QVERIFY(r.out.contains("largest real-time sheet, press (tool crumpling)"));
+        QFile csv(dir.filePath(QStringLiteral("scaling.csv")));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QStringList lines =
+            QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 1 + 3 * 3); // header + 3 loads × 3 resolutions
+        QMap<QString, QList<double>> springs, cost;
+        for (const QString& line : lines.mid(1)) {
+            const QStringList f = line.split(QLatin1Char(','));
+            QCOMPARE(f.size(), 8);
+            QCOMPARE(f[0], QStringLiteral("xpbd"));
+            springs[f[2]] << f[5].toDouble();
+            cost[f[2]] << f[7].toDouble();
+            // ns per spring per step is what the steps per second and springs say.
+            const double product = f[7].toDouble() * f[6].toDouble() * f[5].toDouble();
+            QVERIFY2(std::abs(product / 1e9 - 1.0) < 1e-4, qPrintable(line));
+        }
+        for (const auto& s : springs) QVERIFY(s.size() == 3 && s[0] < s[1] && s[1] < s[2]);
+        // Every load at every size was measured (a sheet that blew up would be left out).
+        QCOMPARE(cost.size(), 3);
+        const QImage chart(dir.filePath(QStringLiteral("scaling.png")));
+        QVERIFY(!chart.isNull());
+        // An unknown integrator, and --integrator without --scaling, are refused.
+        QCOMPARE(runPaperfold({"bench", "--scaling", "--integrator", "rubber"}).exitCode, 1);
+        QCOMPARE(runPaperfold({"bench", "--quick", "--integrator", "xpbd"}).exitCode, 1);
+    }
+
     void benchChartsSpeedAgainstAccuracy() {
         // A sweep of every method over a grid: numbers, checked in the Release build (it
         // took 50-160 s of the sanitized suite, whose work is the memory it touches).

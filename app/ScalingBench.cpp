@@ -1,0 +1,232 @@
+#include "ScalingBench.h"
+
+#include "BuildTuning.h"
+#include "CommandLine.h"
+#include "OutputFile.h"
+#include "PngFile.h"
+#include "Scenes.h"
+#include "Simulation.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QLegend>
+#include <QLineSeries>
+#include <QLogValueAxis>
+#include <QTextStream>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace pf::cli {
+
+namespace {
+
+// What the sheet is doing while it is timed.
+enum class Load { Pressed, Swinging, Resting };
+
+const char* loadName(Load l) {
+    switch (l) {
+    case Load::Pressed:
+        return "press (tool crumpling)";
+    case Load::Swinging:
+        return "drape (swinging)";
+    case Load::Resting:
+        return "at rest on the desk";
+    }
+    return "?";
+}
+
+struct Sample {
+    Load load = Load::Pressed;
+    int resolution = 0;
+    Index vertices = 0;
+    double springs = 0;        // mean over the timed steps (breaks add springs)
+    double stepsPerSecond = 0; // median of the repeats
+    double nsPerSpring = 0;    // per step
+};
+
+// The editor's settings (gravity outside the filter) with the integrator asked for.
+World sceneFor(Load load, int resolution, const QString& integrator) {
+    SceneOptions o;
+    o.resolution = resolution;
+    World w = *makeScene(load == Load::Swinging ? "drape" : "press", o);
+    w.params.gravityOutsideFilter = true;
+    w.params.integrator = integrator.toStdString();
+    if (load == Load::Resting) {
+        // The press sheet without its sphere: a flat sheet lying on the desk.
+        w.script.sphereKeys.clear();
+        w.sphere.active = false;
+    }
+    return w;
+}
+
+Sample measure(Load load, int resolution, const QString& integrator, int warmup, int timed,
+               int repeats) {
+    Sample s;
+    s.load = load;
+    s.resolution = resolution;
+    std::vector<double> rates;
+    for (int r = 0; r < repeats; ++r) {
+        Simulation sim(sceneFor(load, resolution, integrator));
+        for (int k = 0; k < warmup; ++k)
+            if (sim.step() != StepStatus::Ok) return s;
+        const double before = static_cast<double>(sim.world().sheet.springs.size());
+        QElapsedTimer clock;
+        clock.start();
+        for (int k = 0; k < timed; ++k)
+            if (sim.step() != StepStatus::Ok) return s;
+        const double seconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
+        rates.push_back(timed / seconds);
+        s.vertices = sim.world().sheet.verts.size();
+        s.springs = 0.5 * (before + static_cast<double>(sim.world().sheet.springs.size()));
+    }
+    std::sort(rates.begin(), rates.end());
+    s.stepsPerSecond = rates[rates.size() / 2];
+    s.nsPerSpring = 1e9 / (s.stepsPerSecond * s.springs);
+    return s;
+}
+
+QImage drawChart(const std::vector<Sample>& samples, const QString& integrator) {
+    auto* chart = new QChart;
+    chart->setTitle(QStringLiteral("%1, one thread: cost of a step per spring against the "
+                                   "sheet's size (log–log)")
+                        .arg(integrator));
+    auto* x = new QLogValueAxis;
+    x->setTitleText(QStringLiteral("springs"));
+    x->setLabelFormat(QStringLiteral("%.0f"));
+    auto* y = new QLogValueAxis;
+    y->setTitleText(QStringLiteral("ns per spring per step"));
+    y->setLabelFormat(QStringLiteral("%.3g"));
+    // Powers of two: a cost that changes by less than ten times still gets labels.
+    y->setBase(2.0);
+    x->setMinorTickCount(8);
+    chart->addAxis(x, Qt::AlignBottom);
+    chart->addAxis(y, Qt::AlignLeft);
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {0, 0};
+    for (Load load : {Load::Pressed, Load::Swinging, Load::Resting}) {
+        auto* series = new QLineSeries;
+        series->setName(QLatin1String(loadName(load)));
+        series->setPointsVisible(true);
+        for (const Sample& s : samples) {
+            if (s.load != load || !(s.nsPerSpring > 0)) continue;
+            series->append(s.springs, s.nsPerSpring);
+            lo[0] = std::min(lo[0], s.springs);
+            hi[0] = std::max(hi[0], s.springs);
+            lo[1] = std::min(lo[1], s.nsPerSpring);
+            hi[1] = std::max(hi[1], s.nsPerSpring);
+        }
+        chart->addSeries(series);
+        series->attachAxis(x);
+        series->attachAxis(y);
+    }
+    // Log axes do not follow the data by themselves.
+    if (hi[0] > 0) {
+        x->setRange(lo[0] / 1.5, hi[0] * 1.5);
+        y->setRange(lo[1] / 2, hi[1] * 2);
+    }
+    chart->legend()->setAlignment(Qt::AlignBottom);
+    QChartView view(chart);
+    view.setRenderHint(QPainter::Antialiasing);
+    view.resize(1000, 700);
+    return view.grab().toImage();
+}
+
+} // namespace
+
+int runScalingBench(const ScalingOptions& options) {
+    const std::vector<int> resolutions =
+        options.quick ? std::vector<int>{13, 19, 27} : std::vector<int>{19, 27, 38, 54, 76, 108};
+    const int warmup = options.quick ? 30 : 120, timed = options.quick ? 60 : 240, repeats = 3;
+    const QDir dir(options.outputDir);
+    if (!dir.exists() && !QDir().mkpath(dir.path()))
+        throw UsageError{QStringLiteral("--output-dir: cannot create '%1'").arg(dir.path())};
+    const QString csvPath = dir.filePath(QStringLiteral("scaling.csv"));
+    const QString pngPath = dir.filePath(QStringLiteral("scaling.png"));
+    requireWritable(QStringLiteral("output-dir"), csvPath);
+    requireWritable(QStringLiteral("output-dir"), pngPath);
+
+    QTextStream out(stdout), err(stderr);
+    out << "build: " << QString::fromStdString(buildTuning()) << '\n'
+        << "integrator: " << options.integrator << " (the editor's settings)\n"
+        << "threads: 1 (the step runs on one thread)\n"
+        << QStringLiteral("%1 %2 %3 %4 %5 %6\n")
+               .arg(QStringLiteral("load"), -24)
+               .arg(QStringLiteral("resolution"), 10)
+               .arg(QStringLiteral("vertices"), 9)
+               .arg(QStringLiteral("springs"), 9)
+               .arg(QStringLiteral("steps/s"), 9)
+               .arg(QStringLiteral("ns/spring"), 10)
+        << Qt::flush;
+    std::vector<Sample> samples;
+    for (Load load : {Load::Pressed, Load::Swinging, Load::Resting})
+        for (int resolution : resolutions) {
+            const Sample s = measure(load, resolution, options.integrator, warmup, timed, repeats);
+            if (!(s.stepsPerSecond > 0)) {
+                err << "paperfold: the " << loadName(load) << " sheet at resolution " << resolution
+                    << " blew up; it is left out\n";
+                continue;
+            }
+            samples.push_back(s);
+            out << QStringLiteral("%1 %2 %3 %4 %5 %6\n")
+                       .arg(QLatin1String(loadName(load)), -24)
+                       .arg(resolution, 10)
+                       .arg(s.vertices, 9)
+                       .arg(std::lround(s.springs), 9)
+                       .arg(s.stepsPerSecond, 9, 'f', 0)
+                       .arg(s.nsPerSpring, 10, 'f', 1)
+                << Qt::flush;
+        }
+
+    // Real time is 240 steps a second. The largest sheet measured that keeps up, and
+    // where the largest one measured puts the limit if the cost per spring held.
+    for (Load load : {Load::Pressed, Load::Swinging}) {
+        double keptUp = 0, largest = 0, nsAtLargest = 0;
+        for (const Sample& s : samples) {
+            if (s.load != load) continue;
+            if (s.stepsPerSecond >= 240.0) keptUp = std::max(keptUp, s.springs);
+            if (s.springs > largest) {
+                largest = s.springs;
+                nsAtLargest = s.nsPerSpring;
+            }
+        }
+        if (!(nsAtLargest > 0)) continue;
+        out << QStringLiteral("largest real-time sheet, %1: %2 springs measured, about %3 "
+                              "at %4 ns per spring\n")
+                   .arg(QLatin1String(loadName(load)))
+                   .arg(std::lround(keptUp))
+                   .arg(std::lround(1e9 / (240.0 * nsAtLargest)))
+                   .arg(nsAtLargest, 0, 'f', 1);
+    }
+    double active = 0, resting = 0;
+    for (const Sample& s : samples) {
+        if (s.resolution != resolutions.back()) continue;
+        if (s.load == Load::Pressed) active = s.nsPerSpring;
+        if (s.load == Load::Resting) resting = s.nsPerSpring;
+    }
+    if (active > 0 && resting > 0)
+        out << QStringLiteral("at rest / crumpled, resolution %1: %2\n")
+                   .arg(resolutions.back())
+                   .arg(resting / active, 0, 'f', 3);
+
+    QString csv;
+    QTextStream c(&csv);
+    c << "integrator,threads,load,resolution,vertices,springs,steps_per_second,ns_per_spring_"
+         "step\n";
+    for (const Sample& s : samples)
+        c << options.integrator << ",1," << loadName(s.load) << ',' << s.resolution << ','
+          << s.vertices << ',' << s.springs << ',' << s.stepsPerSecond << ',' << s.nsPerSpring
+          << '\n';
+    c.flush();
+    QString error;
+    if (!writeOutputFile(csvPath, csv.toUtf8(), &error) ||
+        !writePng(drawChart(samples, options.integrator), pngPath, &error)) {
+        err << "paperfold: " << error << '\n';
+        return 2;
+    }
+    out << "wrote " << csvPath << " and " << pngPath << '\n';
+    return 0;
+}
+
+} // namespace pf::cli
