@@ -25,13 +25,14 @@ double breakProbabilityForGrowth(double P, double growth, double referenceGrowth
 
 namespace {
 
-double contraction(const Sheet& sheet, Index spring) {
-    const auto& S = sheet.springs;
-    const auto& x = sheet.verts.x;
-    return 1.0 - (x[S.a[spring]] - x[S.b[spring]]).norm() / S.rest[spring];
-}
+// What Eq. 10 reads of an edge (docs/model.md, "What a stiff paper's break reads"):
+// its chord, and its contraction with the length l that goes with it.
+struct EdgeLoad {
+    double chord = 0.0;
+    double contraction = 0.0;
+    double length = 0.0;
+};
 
-// The contraction Eq. 10 reads (docs/model.md, "What a stiff paper's break reads").
 // The paper reads the chord: its soft springs shorten where the paper buckles finer than
 // the mesh. Paper with its real stretch stiffness (xpbd) keeps every chord at its length
 // and bends instead, so there the contraction is read on the arc: paper whose normals
@@ -41,15 +42,20 @@ struct ContractionReading {
     const std::vector<Vec3>& normals;
     bool onTheArc;
 
-    double of(const Sheet& sheet, Index spring) const {
-        const double chord = contraction(sheet, spring);
-        if (!onTheArc) return chord;
+    EdgeLoad of(const Sheet& sheet, Index spring) const {
         const auto& S = sheet.springs;
-        const double turn =
-            std::acos(std::clamp(normals[S.a[spring]].dot(normals[S.b[spring]]), -1.0, 1.0));
+        const Index i = S.a[spring], j = S.b[spring];
+        EdgeLoad e;
+        e.chord = (sheet.verts.x[i] - sheet.verts.x[j]).norm();
+        e.contraction = 1.0 - e.chord / S.rest[spring];
+        e.length = e.chord;
+        if (!onTheArc) return e;
+        const double turn = std::acos(std::clamp(normals[i].dot(normals[j]), -1.0, 1.0));
         const double half = 0.5 * turn;
         const double spanned = half > 1e-8 ? std::sin(half) / half : 1.0;
-        return 1.0 - (1.0 - chord) * spanned;
+        e.contraction = 1.0 - (1.0 - e.contraction) * spanned;
+        e.length = S.rest[spring] * (1.0 - e.contraction);
+        return e;
     }
 };
 
@@ -298,34 +304,31 @@ bool canBreak(const Sheet& sheet, Index spring) {
 
 namespace {
 
-// A breakable compressed edge between two triangles, not held at both ends and long
-// enough to split: one that Eq. 10 applies to.
+// A breakable contracted edge between two triangles, not held at both ends and long
+// enough to split: one that Eq. 10 applies to. `load` is what the reading found.
 bool breakCandidate(const Sheet& sheet, Index spring, double spacing,
-                    const ContractionReading& reading) {
+                    const ContractionReading& reading, EdgeLoad& load) {
     if (!splittable(sheet, spring)) return false;
     const auto& S = sheet.springs;
     const auto& V = sheet.verts;
-    const Index i = S.a[spring], j = S.b[spring];
-    if (V.pinned[i] && V.pinned[j]) return false;
-    // The cheap test first: most edges of a sheet are not compressed at all. An edge
+    if (V.pinned[S.a[spring]] && V.pinned[S.b[spring]]) return false;
+    // The cheap tests first: most edges of a sheet are not contracted at all. An edge
     // squeezed to nothing (pins can hold i on j) is not a candidate: its crease would
     // remember a rest length of zero.
-    const double l = (V.x[i] - V.x[j]).norm();
-    if (!(l > 0.0) || !(reading.of(sheet, spring) > 0.0)) return false;
+    load = reading.of(sheet, spring);
+    if (!(load.chord > 0.0 && load.contraction > 0.0)) return false;
     return leavesMass(sheet, spring) && keepsCreaseSpacing(sheet, spring, spacing) &&
            splitsIntoProperTriangles(sheet, spring);
 }
 
-double candidateProbability(const Sheet& sheet, const ContractionReading& reading, Index spring,
-                            double phi) {
-    const auto& normals = reading.normals;
+double candidateProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
+                            const EdgeLoad& load, double phi) {
     const auto& S = sheet.springs;
     const auto& V = sheet.verts;
     const Index i = S.a[spring], j = S.b[spring];
     const Index r = sheet.oppositeVertex(S.faces[spring][0], i, j);
     const Index lv = sheet.oppositeVertex(S.faces[spring][1], i, j);
-    const double l = S.rest[spring] * (1.0 - reading.of(sheet, spring));
-    return breakProbability(l, S.rest[spring], (V.x[r] - V.x[lv]).norm(),
+    return breakProbability(load.length, S.rest[spring], (V.x[r] - V.x[lv]).norm(),
                             normals[i].dot(normals[j]), normals[r].dot(normals[lv]), phi);
 }
 
@@ -333,9 +336,10 @@ double candidateProbability(const Sheet& sheet, const ContractionReading& readin
 
 double springBreakProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
                               const SimParams& params) {
-    const ContractionReading reading = readingFor(params, normals);
-    return breakCandidate(sheet, spring, params.material.creaseSpacing, reading)
-               ? candidateProbability(sheet, reading, spring, params.phi)
+    EdgeLoad load;
+    return breakCandidate(sheet, spring, params.material.creaseSpacing, readingFor(params, normals),
+                          load)
+               ? candidateProbability(sheet, normals, spring, load, params.phi)
                : 0.0;
 }
 
@@ -351,10 +355,13 @@ bool keepsCreaseSpacing(const Sheet& sheet, Index spring, double spacing) {
     return true;
 }
 
-void recordCurrentContraction(Sheet& sheet) {
+void recordCurrentContraction(Sheet& sheet, const SimParams& params) {
+    std::vector<Vec3> normals;
+    computeVertexNormals(sheet, normals);
+    const ContractionReading reading = readingFor(params, normals);
     auto& peak = sheet.springs.peakContraction;
     for (Index s = 0; s < sheet.springs.size(); ++s)
-        peak[s] = std::clamp(contraction(sheet, s), 0.0, 1.0);
+        peak[s] = std::clamp(reading.of(sheet, s).contraction, 0.0, 1.0);
 }
 
 void computeBreakProbabilities(const Sheet& sheet, const SimParams& params, BreakScratch& scratch) {
@@ -377,16 +384,17 @@ int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t s
     const Index count = sheet.springs.size();
     scratch.probability.assign(static_cast<std::size_t>(count), 0.0f);
     const ContractionReading reading = readingFor(params, normals);
+    EdgeLoad load;
     for (Index s = 0; s < count; ++s) {
-        if (!breakCandidate(sheet, s, params.material.creaseSpacing, reading)) continue;
+        if (!breakCandidate(sheet, s, params.material.creaseSpacing, reading, load)) continue;
         // A triangle split in this pass may have the new vertex opposite, which has no
         // normal yet: its edges wait for the next step (and show 0 until then).
         const auto& faces = sheet.springs.faces[s];
         if (scratch.touched[faces[0]] || scratch.touched[faces[1]]) continue;
-        const double P = candidateProbability(sheet, reading, s, params.phi);
+        const double P = candidateProbability(sheet, normals, s, load, params.phi);
         scratch.probability[s] = static_cast<float>(P);
         double& peak = sheet.springs.peakContraction[s];
-        const double now = reading.of(sheet, s);
+        const double now = load.contraction;
         const double growth = now - peak;
         if (!(growth > 0.0)) continue;
         peak = now;

@@ -29,9 +29,11 @@ bool canBreak(const Sheet& sheet, Index spring);
 // material: the finest crease spacing the paper forms (Material::creaseSpacing).
 bool keepsCreaseSpacing(const Sheet& sheet, Index spring, double spacing);
 
-// Sets every spring's peak contraction to the contraction it carries now: a sheet made
-// before load-driven breaking counts as having carried the load it stands under.
-void recordCurrentContraction(Sheet& sheet);
+// Sets every spring's peak contraction to the contraction it carries now, as `params`
+// read it (the chord, or the arc for xpbd): a sheet made before load-driven breaking, or
+// one whose integrator changes the reading, counts as having carried the load it stands
+// under.
+void recordCurrentContraction(Sheet& sheet, const SimParams& params);
 
 // Breaks structural spring `spring` (which must have two faces): inserts vertex n
 // between its ends, offset by Eq. 11 toward the side the edge bends to, splits both
@@ -50,8 +52,8 @@ bool canRecover(const Sheet& sheet, Index event);
 bool recoverEvent(Sheet& sheet, Index event);
 
 // Eq. 10 for `spring` as the sheet stands (`normals`: its vertex normals): zero where
-// the spring cannot break, is not compressed, joins two pinned vertices, or is too short
-// to split (keepsCreaseSpacing).
+// the spring cannot break, is not contracted (as `params` read it), joins two pinned vertices, or
+// is too short to split (keepsCreaseSpacing).
 double springBreakProbability(const Sheet& sheet, const std::vector<Vec3>& normals, Index spring,
                               const SimParams& params);
 

@@ -144,6 +144,10 @@ void EditSession::setParams(const SimParams& given) {
     setSettle(Settle::None); // an edit ends a freeze (and a settle under way)
     if (!(params.material == sim_.world().params.material))
         setMaterial(sim_.world(), params.material);
+    // xpbd reads an edge's contraction on the arc, the others on the chord: peaks kept
+    // in one reading would set off a burst of breaks in the other (or hold them back).
+    if (params.integrator != sim_.world().params.integrator)
+        recordCurrentContraction(sim_.world().sheet, params);
     sim_.world().params = params;
     sim_.sheetEdited(); // φ weighs Eq. 10
 }

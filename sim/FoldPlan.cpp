@@ -66,7 +66,10 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
     for (Index i = 0; i < V.size(); ++i)
         mass[(V.x[i] - request.from).dot(across) > 0.0 ? 1 : 0] += V.m[i];
     if (!(mass[0] > 0.0 && mass[1] > 0.0)) return refuse(FoldRefusal::NothingToFold);
-    const double side = mass[1] <= mass[0] ? 1.0 : -1.0;
+    // Halves that weigh the same (a line across the middle of a sheet) differ only by
+    // rounding, which would pick the side by the sheet's resolution: within a billionth,
+    // the side `across` points to is the flap.
+    const double side = mass[1] <= mass[0] * (1.0 + 1e-9) ? 1.0 : -1.0;
     PinGroup carry;
     for (Index i = 0; i < V.size(); ++i)
         if (side * (V.x[i] - request.from).dot(across) > kFoldBand && !V.pinned[i])

@@ -87,12 +87,13 @@ World compressScene(const SceneOptions& options) {
 
 World foldScene(const SceneOptions& options) {
     World w = baseWorld("fold", options, 0.0);
-    // The far half is folded over onto the near one across the middle as the Fold tool
+    // The near half is folded over onto the far one across the middle as the Fold tool
     // folds (sim/FoldPlan.h): carried round as a hand carries it, held pressed flat, and
     // let go; the crease forms in the band along the line, where the paper bends.
     // A sphere rolled along the fold pressed a crease into the soft springs of the
     // paper's model, but stiff paper stands a loose fold up in a loop centimetres tall,
-    // which a sphere rolled along it pushes aside rather than presses.
+    // which a sphere rolled along it pushes aside rather than presses. A sheet too short
+    // to have paper beyond the band on both sides is not folded: it lies on the desk.
     const double reach = 0.5 * options.width + 0.01;
     FoldPlan plan = planFold(w, {Vec3(-reach, 0.0, 0.0), Vec3(reach, 0.0, 0.0)});
     for (PinGroup& g : plan.motions) {

@@ -25,8 +25,9 @@ inline constexpr double kMaxSheetSide = 2.0;
 //   drape    pinned at two corners, falls under gravity; breaking off
 //   compress two opposite edges pushed toward each other: the sheet buckles and creases
 //   drop     a sheet tilted 45° falls onto the ground
-//   fold     one short edge is turned over onto the other, the fold pressed by the sphere
-//            and let go: whether the crease holds the fold
+//   fold     the near half is turned over onto the far one across the middle, held
+//            pressed flat and let go, as the Fold tool folds: whether the crease holds
+//            the fold
 //   crumple-cycles  the rim gathered in to half the sheet's size and pulled out flat
 //            again, kCrumpleCycles times: crease length against cycles (Gottesman et al.
 //            2018), measured by CrumpleCycles.h

@@ -455,7 +455,8 @@ Sheet sheetFromCbor(const QCborMap& m) {
     }
     const std::string problem = validateSheet(s);
     if (!problem.empty()) fail(QStringLiteral("sheet: %1").arg(QString::fromStdString(problem)));
-    if (!hasPeaks) recordCurrentContraction(s);
+    // The chord, as every integrator read it when files held no peaks.
+    if (!hasPeaks) recordCurrentContraction(s, SimParams{});
     return s;
 }
 
