@@ -2,7 +2,6 @@
 
 #include "BuildTuning.h"
 #include "CommandLine.h"
-#include "Integrator.h"
 #include "OutputFile.h"
 #include "PngFile.h"
 #include "ScalingBench.h"
@@ -35,7 +34,7 @@ struct Config {
 // xpbd is paper with its real stiffness, a different physics from the paper's 100 N/m
 // springs: its error is measured against its own run at a far smaller step, and it is
 // charted beside the springs' Pareto front, not on it.
-bool ownPhysics(const SimParams& p) {
+bool ownReference(const SimParams& p) {
     return p.integrator == "xpbd";
 }
 
@@ -43,7 +42,7 @@ struct Row {
     QString family, scene;
     double dt = 0, cost = 0, error = INFINITY, strain = 0, stretch = 0, fall = 0, energy = 0;
     int sweeps = 0, substeps = 0;
-    bool stable = true, paper = false;
+    bool stable = true, ownReference = false;
 };
 
 std::vector<Config> configurations(const std::vector<double>& steps, bool quick) {
@@ -86,7 +85,7 @@ std::vector<Config> configurations(const std::vector<double>& steps, bool quick)
 std::vector<const Row*> paretoFront(const std::vector<Row>& rows) {
     std::vector<const Row*> ok;
     for (const Row& r : rows)
-        if (r.stable && !r.paper && std::isfinite(r.error) && r.error > 0) ok.push_back(&r);
+        if (r.stable && !r.ownReference && std::isfinite(r.error) && r.error > 0) ok.push_back(&r);
     std::sort(ok.begin(), ok.end(), [](const Row* a, const Row* b) { return a->cost < b->cost; });
     std::vector<const Row*> front;
     double best = INFINITY;
@@ -124,7 +123,7 @@ QImage drawChart(const std::vector<Row>& rows, const QString& scene) {
             s->setName(r.family);
             s->setMarkerSize(11);
             // Another physics, another error: its own shape, whatever colour it gets.
-            if (r.paper) s->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+            if (r.ownReference) s->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
             chart->addSeries(s);
             s->attachAxis(x);
             s->attachAxis(y);
@@ -167,7 +166,8 @@ int runBench(const QStringList& arguments) {
     parser.setApplicationDescription(QStringLiteral(
         "Speed against accuracy for every integrator configuration (method × sweeps × time "
         "step, i.e. sub-steps of a 60 Hz frame) on the canonical scenes. Prints a table and "
-        "writes bench.csv and one chart per scene, bench_<scene>.png."));
+        "writes bench.csv and one chart per scene, bench_<scene>.png. With --scaling: the "
+        "cost per spring against the sheet's size instead (scaling.csv, scaling.png)."));
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("bench"), QStringLiteral("The subcommand."));
     parser.addOptions({
@@ -190,11 +190,7 @@ int runBench(const QStringList& arguments) {
     if (parser.isSet(QStringLiteral("scaling"))) {
         ScalingOptions scaling;
         scaling.quick = quick;
-        scaling.integrator = parser.value(QStringLiteral("integrator"));
-        const auto& names = integratorNames();
-        if (std::find(names.begin(), names.end(), scaling.integrator.toStdString()) == names.end())
-            throw UsageError{
-                QStringLiteral("--integrator: unknown integrator '%1'").arg(scaling.integrator)};
+        scaling.integrator = QString::fromStdString(integratorOption(parser));
         scaling.outputDir = parser.value(QStringLiteral("output-dir"));
         return runScalingBench(scaling);
     }
@@ -259,8 +255,8 @@ int runBench(const QStringList& arguments) {
             r.scene = scene;
             r.dt = c.params.dt;
             r.sweeps = c.params.iterations;
-            r.paper = ownPhysics(c.params);
-            r.substeps = r.paper ? c.params.substeps : 0;
+            r.ownReference = ownReference(c.params);
+            r.substeps = r.ownReference ? c.params.substeps : 0;
             std::vector<double> times;
             World last;
             for (int k = 0; k < repeats; ++k) {
@@ -275,7 +271,7 @@ int runBench(const QStringList& arguments) {
             std::sort(times.begin(), times.end());
             r.cost = times[times.size() / 2];
             if (r.stable) {
-                r.error = trajectoryError(last.sheet, reference[r.paper ? 1 : 0].sheet);
+                r.error = trajectoryError(last.sheet, reference[r.ownReference ? 1 : 0].sheet);
                 const SheetStats stats = computeStats(last.sheet);
                 r.strain = stats.maxStrain;
                 r.stretch = stats.maxStretch;
@@ -283,8 +279,9 @@ int runBench(const QStringList& arguments) {
             r.fall = freeFallRatio(c.params);
             // The undamped energy is the springs' (½ k (l − L)²): it has no meaning for
             // xpbd's constraints.
-            r.energy =
-                r.paper ? NAN : energyRatio(scene.toStdString(), resolution, c.params, horizon);
+            r.energy = r.ownReference
+                           ? NAN
+                           : energyRatio(scene.toStdString(), resolution, c.params, horizon);
             rows.push_back(r);
         }
     }
@@ -309,8 +306,8 @@ int runBench(const QStringList& arguments) {
         const long sub = std::lround((1.0 / 60) / r.dt);
         c << r.scene << ',' << r.family << ',' << r.dt << ',' << sub << ',' << r.sweeps << ','
           << r.substeps << ',' << r.cost << ',' << r.error << ','
-          << (r.paper ? "xpbd" : "backward-euler") << ',' << r.strain << ',' << r.stretch << ','
-          << r.fall << ',' << r.energy << ',' << (r.stable ? 1 : 0) << '\n';
+          << (r.ownReference ? "xpbd" : "backward-euler") << ',' << r.strain << ',' << r.stretch
+          << ',' << r.fall << ',' << r.energy << ',' << (r.stable ? 1 : 0) << '\n';
         out << QStringLiteral("%1 %2 1/%3 %4 %5 %6 %7 %8\n")
                    .arg(r.scene, -9)
                    .arg(r.family, -36)

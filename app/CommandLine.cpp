@@ -1,12 +1,25 @@
 #include "CommandLine.h"
 
+#include "Integrator.h"
 #include "OutputFile.h"
 
 #include <QStringList>
 #include <QTextStream>
+#include <algorithm>
 #include <cmath>
 
 namespace pf::cli {
+
+std::string integratorOption(const QCommandLineParser& parser) {
+    const QString name = parser.value(QStringLiteral("integrator"));
+    const auto& names = integratorNames();
+    if (std::find(names.begin(), names.end(), name.toStdString()) != names.end())
+        return name.toStdString();
+    QStringList known;
+    for (const auto& n : names) known << QString::fromStdString(n);
+    throw UsageError{QStringLiteral("--integrator: unknown integrator '%1' (known: %2)")
+                         .arg(name, known.join(QStringLiteral(", ")))};
+}
 
 std::optional<double> realOption(const QCommandLineParser& parser, const QString& name, double min,
                                  double max) {

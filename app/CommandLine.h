@@ -5,6 +5,7 @@
 #include <QStringList>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace pf::cli {
 
@@ -19,6 +20,10 @@ std::optional<double> realOption(const QCommandLineParser& parser, const QString
 std::optional<long long> integerOption(const QCommandLineParser& parser, const QString& name,
                                        long long min, long long max);
 std::optional<std::uint64_t> seedOption(const QCommandLineParser& parser, const QString& name);
+
+// The integrator --integrator names; throws UsageError, with the known ones, for any
+// other name.
+std::string integratorOption(const QCommandLineParser& parser);
 
 // Throws UsageError, naming the option, unless `path` may be written (OutputFile.h:
 // a regular file or a new name in a writable folder, none of `inputs`). Commands call it

@@ -2,7 +2,6 @@
 
 #include "CommandLine.h"
 #include "Fidelity.h"
-#include "Integrator.h"
 #include "OutputFile.h"
 
 #include <QTextStream>
@@ -33,10 +32,7 @@ int runFidelity(const QStringList& arguments) {
     if (!parseCommand(parser, arguments)) return 0;
     FidelityOptions o;
     o.quick = parser.isSet(QStringLiteral("quick"));
-    o.integrator = parser.value(QStringLiteral("integrator")).toStdString();
-    if (!makeIntegrator(o.integrator))
-        throw UsageError{QStringLiteral("--integrator: unknown integrator '%1'")
-                             .arg(parser.value(QStringLiteral("integrator")))};
+    o.integrator = integratorOption(parser);
     if (!materialPreset(parser.value(QStringLiteral("material")).toStdString(), o.material))
         throw UsageError{QStringLiteral("--material: unknown material '%1' (tissue, office, card)")
                              .arg(parser.value(QStringLiteral("material")))};

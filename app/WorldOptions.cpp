@@ -100,11 +100,7 @@ World worldFromOptions(const QCommandLineParser& parser) {
         setMaterial(*world, m);
     }
     if (parser.isSet(QStringLiteral("integrator"))) {
-        const QString name = parser.value(QStringLiteral("integrator"));
-        if (!makeIntegrator(name.toStdString()))
-            throw UsageError{QStringLiteral("unknown integrator '%1' (known: %2)")
-                                 .arg(name, joined(integratorNames()))};
-        p.integrator = name.toStdString();
+        p.integrator = integratorOption(parser);
     }
     return std::move(*world);
 }

@@ -166,7 +166,8 @@ Index breakEdge(Sheet& sheet, Index spring, const std::vector<Vec3>& normals, do
     const Index t3 = splitTriangle(sheet, t1, i, j, n, ein, enj, ern);
     const Index t4 = splitTriangle(sheet, t2, i, j, n, ein, enj, enl);
 
-    // e_ij becomes an unbreakable crease remembering the compressed length.
+    // e_ij becomes an unbreakable crease remembering its length now (compressed, for the
+    // paper's soft springs; about its rest length for stiff paper read on the arc).
     S.kind[spring] = SpringKind::Crease;
     S.breakable[spring] = 0;
     S.rest[spring] = len;

@@ -70,10 +70,10 @@ struct BreakScratch {
 // when breaking is off): for a sheet changed outside a step, such as by an undo.
 void computeBreakProbabilities(const Sheet& sheet, const SimParams& params, BreakScratch& scratch);
 
-// Tests every breakable compressed spring with two faces in index order, at most one
-// break per triangle per step. A spring whose contraction has grown past its peak draws
-// one uniform number from rng (breakProbabilityForGrowth) and records the new peak.
-// Returns the number of breaks.
+// Tests every breakable contracted spring (as params read it: the chord, or the arc for
+// xpbd) with two faces in index order, at most one break per triangle per step. A spring whose
+// contraction has grown past its peak draws one uniform number from rng (breakProbabilityForGrowth)
+// and records the new peak. Returns the number of breaks.
 int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t step,
                  BreakScratch& scratch);
 

@@ -251,7 +251,7 @@ class TestSheetFile : public QObject {
         QVERIFY(recoverEvent(s, last));
     }
 
-    // The fold scene's edge turns about an axis and is let go at a time: saved mid-turn,
+    // The fold scene's flap turns about an axis and is let go at a time: saved mid-turn,
     // the sheet resumes bit for bit through the turn and the release; a turn about a
     // non-unit axis is refused.
     void aTurningPinGroupResumesExactly() {
