@@ -1,6 +1,7 @@
 #include "Breaking.h"
 
 #include "Normals.h"
+#include "Simulation.h"
 #include "TopologyEdit.h"
 
 #include <algorithm>
@@ -262,10 +263,14 @@ bool recoverEvent(Sheet& sheet, Index event) {
 namespace {
 
 // A breakable structural edge between two triangles: the mesh has room to split it.
+// But an edge a file says is longer than the sheet may ever reach (kDivergenceRadius) is not
+// paper: Eq. 11 would lift its new vertex out of the world (the recording fuzzer found a
+// rest length of 1.9e185 m).
 bool splittable(const Sheet& sheet, Index spring) {
     const auto& S = sheet.springs;
     return S.kind[spring] == SpringKind::Structural && S.breakable[spring] &&
-           S.faces[spring][0] != kNone && S.faces[spring][1] != kNone;
+           S.faces[spring][0] != kNone && S.faces[spring][1] != kNone &&
+           S.rest[spring] <= kDivergenceRadius;
 }
 
 // A sheet from a file may hold masses that do not follow its rest areas; a break that

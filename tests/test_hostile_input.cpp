@@ -470,9 +470,11 @@ class TestHostileInput : public QObject {
         // A crumple-cycles recording whose sheet has two pinned rim vertices on one point:
         // a hinge between them had rest length zero, and the replayed sheet was invalid.
         // A press recording whose sheet holds two material points 8e-59 m apart: a break
-        // halved a triangle that thin into one of zero area.
-        for (const char* name :
-             {"recording_coincident_pins.bin", "recording_hairline_triangle.bin"}) {
+        // halved a triangle that thin into one of zero area. A recording whose sheet holds a
+        // spring of rest length 1.9e185: Eq. 11 squared it and put the new vertex at
+        // infinity.
+        for (const char* name : {"recording_coincident_pins.bin", "recording_hairline_triangle.bin",
+                                 "recording_huge_rest_length.bin"}) {
             QFile file(dir.filePath(QString::fromLatin1(name)));
             QVERIFY(file.open(QIODevice::ReadOnly));
             const pf::RecordingLoad recording = pf::decodeRecording(file.readAll());
