@@ -1,7 +1,7 @@
 #include "Breaking.h"
 
+#include "Integrator.h"
 #include "Normals.h"
-#include "Simulation.h"
 #include "TopologyEdit.h"
 
 #include <algorithm>
@@ -61,7 +61,7 @@ struct ContractionReading {
 };
 
 ContractionReading readingFor(const SimParams& params, const std::vector<Vec3>& normals) {
-    return {normals, params.integrator == "xpbd"};
+    return {normals, keepsEdgeLengths(params.integrator)};
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 
 #include "Breaking.h"
 #include "Hinges.h"
+#include "Integrator.h"
 #include "Normals.h"
 #include "Scenes.h"
 
@@ -146,7 +147,7 @@ void EditSession::setParams(const SimParams& given) {
         setMaterial(sim_.world(), params.material);
     // xpbd reads an edge's contraction on the arc, the others on the chord: peaks kept
     // in one reading would set off a burst of breaks in the other (or hold them back).
-    if (params.integrator != sim_.world().params.integrator)
+    if (keepsEdgeLengths(params.integrator) != keepsEdgeLengths(sim_.world().params.integrator))
         recordCurrentContraction(sim_.world().sheet, params);
     sim_.world().params = params;
     sim_.sheetEdited(); // φ weighs Eq. 10

@@ -16,6 +16,10 @@ std::unique_ptr<Integrator> makeIntegrator(std::string_view name) {
     return nullptr;
 }
 
+bool keepsEdgeLengths(std::string_view integrator) {
+    return integrator == "xpbd";
+}
+
 const std::vector<std::string>& integratorNames() {
     static const std::vector<std::string> names{"jacobi", "jacobi-scalar", "symplectic",
                                                 "backward-euler", "xpbd"};

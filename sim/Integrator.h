@@ -40,6 +40,11 @@ class Integrator {
 std::unique_ptr<Integrator> makeIntegrator(std::string_view name);
 const std::vector<std::string>& integratorNames();
 
+// Whether the integrator holds the paper at its real stretch stiffness ("xpbd"): its
+// edges keep their length, so a break reads the arc, not the chord (Breaking.cpp), and
+// the solver lab measures it against its own physics, not the 100 N/m springs'.
+bool keepsEdgeLengths(std::string_view integrator);
+
 // x += h v for every vertex; shared by all integrators after their velocity update.
 void advancePositions(Sheet& sheet, double h);
 

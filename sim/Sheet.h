@@ -16,6 +16,9 @@ enum class SpringKind : std::uint8_t {
 };
 inline constexpr int kSpringKindCount = 4;
 
+// Positions far beyond this distance from the origin (metres) count as a blow-up.
+inline constexpr double kDivergenceRadius = 1.0e3;
+
 // Per-vertex data, structure of arrays.
 struct Vertices {
     std::vector<Vec3> x;              // position

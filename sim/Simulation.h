@@ -78,7 +78,4 @@ class Simulation {
     Index heldVertex_ = kNone;
 };
 
-// Positions far beyond this distance from the origin (metres) count as a blow-up.
-inline constexpr double kDivergenceRadius = 1.0e3;
-
 } // namespace pf
