@@ -2,6 +2,7 @@
 
 #include "Integrator.h"
 #include "OutputFile.h"
+#include "WorkerPool.h"
 
 #include <QStringList>
 #include <QTextStream>
@@ -19,6 +20,19 @@ std::string integratorOption(const QCommandLineParser& parser) {
     for (const auto& n : names) known << QString::fromStdString(n);
     throw UsageError{QStringLiteral("--integrator: unknown integrator '%1' (known: %2)")
                          .arg(name, known.join(QStringLiteral(", ")))};
+}
+
+void addThreadsOption(QCommandLineParser& parser) {
+    parser.addOption({QStringLiteral("threads"),
+                      QStringLiteral("Threads the step runs on (default: all cores, %1 here). The "
+                                     "result is the same, bit for bit, on any number.")
+                          .arg(WorkerPool::machineThreads()),
+                      QStringLiteral("n")});
+}
+
+int threadsOption(const QCommandLineParser& parser) {
+    return static_cast<int>(integerOption(parser, QStringLiteral("threads"), 1, 64)
+                                .value_or(WorkerPool::machineThreads()));
 }
 
 std::optional<double> realOption(const QCommandLineParser& parser, const QString& name, double min,

@@ -25,6 +25,11 @@ std::optional<std::uint64_t> seedOption(const QCommandLineParser& parser, const 
 // other name.
 std::string integratorOption(const QCommandLineParser& parser);
 
+// --threads: the threads a step runs on. addThreadsOption adds it to a command;
+// threadsOption reads it (1-64), or gives all the machine's threads when it is not given.
+void addThreadsOption(QCommandLineParser& parser);
+int threadsOption(const QCommandLineParser& parser);
+
 // Throws UsageError, naming the option, unless `path` may be written (OutputFile.h:
 // a regular file or a new name in a writable folder, none of `inputs`). Commands call it
 // before long work starts.

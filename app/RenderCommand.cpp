@@ -27,6 +27,7 @@ int runRender(const QStringList& arguments) {
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("render"), QStringLiteral("The subcommand."));
     addWorldOptions(parser);
+    addThreadsOption(parser);
     addPictureOptions(parser);
     parser.addOptions({
         {QStringLiteral("steps"),
@@ -71,6 +72,7 @@ int runRender(const QStringList& arguments) {
             QStringLiteral("--output needs a pattern such as frame_%04d.png with --frames")};
     const double threshold =
         realOption(parser, QStringLiteral("threshold"), 0.0, 1.0).value_or(0.01);
+    const int threads = threadsOption(parser);
     QStringList inputs = worldInputs(parser) + picture.lookInputs;
     const QString refPath = parser.value(QStringLiteral("reference"));
     if (parser.isSet(QStringLiteral("reference"))) inputs << refPath;
@@ -90,6 +92,7 @@ int runRender(const QStringList& arguments) {
     }
 
     Simulation sim(worldFromOptions(parser));
+    sim.setThreads(threads);
     options.sigma = sim.world().params.sigma; // the sheet's own, or --sigma
     QTextStream out(stdout), err(stderr);
     auto advance = [&](long long n) {

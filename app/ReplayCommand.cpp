@@ -36,6 +36,7 @@ int runReplay(const QStringList& arguments) {
          QStringLiteral("k")},
     });
     addPictureOptions(parser);
+    addThreadsOption(parser);
     if (!parseCommand(parser, arguments, 2)) return 0;
     if (parser.positionalArguments().size() != 2)
         throw UsageError{QStringLiteral("replay needs one recording file (a .paperrec)")};
@@ -43,6 +44,7 @@ int runReplay(const QStringList& arguments) {
     if (parser.isSet(QStringLiteral("save")))
         requireWritable(QStringLiteral("save"), parser.value(QStringLiteral("save")), {path});
     const PictureSetup picture = pictureFromOptions(parser);
+    const int threads = threadsOption(parser);
     const int every =
         static_cast<int>(integerOption(parser, QStringLiteral("every"), 1, 1'000'000).value_or(4));
     std::optional<OutputPattern> frames;
@@ -58,6 +60,7 @@ int runReplay(const QStringList& arguments) {
     if (!load.log) throw UsageError{load.error};
     const EditLog& log = *load.log;
     EditSession session(log);
+    session.simulation().setThreads(threads);
     QTextStream err(stderr);
 
     // Frame f shows the sheet after f·every steps; every target is checked before any work.
@@ -118,6 +121,7 @@ int runReplay(const QStringList& arguments) {
     QJsonObject stats = statsJson(session.world(), wall, steps);
     stats[QStringLiteral("commands")] = static_cast<qint64>(log.commands.size());
     stats[QStringLiteral("complete")] = failure.empty();
+    stats[QStringLiteral("threads")] = session.simulation().threads();
     if (parser.isSet(QStringLiteral("stats")))
         QTextStream(stdout) << QJsonDocument(stats).toJson(QJsonDocument::Compact) << '\n';
     else

@@ -6,6 +6,7 @@
 #include "PngFile.h"
 #include "Scenes.h"
 #include "Simulation.h"
+#include "WorkerPool.h"
 
 #include <QChart>
 #include <QChartView>
@@ -40,6 +41,7 @@ const char* loadName(Load l) {
 
 struct Sample {
     Load load = Load::Pressed;
+    int threads = 1;
     int resolution = 0;
     Index vertices = 0;
     double springs = 0;        // mean over the timed steps (breaks add springs)
@@ -71,14 +73,16 @@ double realTimeRate(const QString& integrator) {
 // they would take more than kTimedSeconds of wall time (at the warm-up's pace).
 constexpr double kTimedSeconds = 3.0;
 
-Sample measure(Load load, int resolution, const QString& integrator, int warmup, int timed,
-               int repeats) {
+Sample measure(Load load, int resolution, const QString& integrator, int threads, int warmup,
+               int timed, int repeats) {
     Sample s;
     s.load = load;
+    s.threads = threads;
     s.resolution = resolution;
     std::vector<double> rates;
     for (int r = 0; r < repeats; ++r) {
         Simulation sim(sceneFor(load, resolution, integrator));
+        sim.setThreads(threads);
         QElapsedTimer clock;
         clock.start();
         for (int k = 0; k < warmup; ++k)
@@ -100,10 +104,11 @@ Sample measure(Load load, int resolution, const QString& integrator, int warmup,
     return s;
 }
 
-QImage drawChart(const std::vector<Sample>& samples, const QString& integrator) {
+QImage drawChart(const std::vector<Sample>& samples, const QString& integrator,
+                 const std::vector<int>& threadCounts) {
     auto* chart = new QChart;
-    chart->setTitle(QStringLiteral("%1, one thread: cost of a step per spring against the "
-                                   "sheet's size (log–log)")
+    chart->setTitle(QStringLiteral("%1: cost of a step per spring against the sheet's size "
+                                   "(log–log; the work of all threads, per wall-clock second)")
                         .arg(integrator));
     auto* x = new QLogValueAxis;
     x->setTitleText(QStringLiteral("springs"));
@@ -117,22 +122,31 @@ QImage drawChart(const std::vector<Sample>& samples, const QString& integrator) 
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {0, 0};
-    for (Load load : {Load::Pressed, Load::Swinging, Load::Resting}) {
-        auto* series = new QLineSeries;
-        series->setName(QLatin1String(loadName(load)));
-        series->setPointsVisible(true);
-        for (const Sample& s : samples) {
-            if (s.load != load || !(s.nsPerSpring > 0)) continue;
-            series->append(s.springs, s.nsPerSpring);
-            lo[0] = std::min(lo[0], s.springs);
-            hi[0] = std::max(hi[0], s.springs);
-            lo[1] = std::min(lo[1], s.nsPerSpring);
-            hi[1] = std::max(hi[1], s.nsPerSpring);
+    const QColor colours[] = {QColor(200, 60, 40), QColor(40, 110, 200), QColor(60, 150, 70)};
+    for (int threads : threadCounts)
+        for (Load load : {Load::Pressed, Load::Swinging, Load::Resting}) {
+            auto* series = new QLineSeries;
+            series->setName(QStringLiteral("%1, %2 thread%3")
+                                .arg(QLatin1String(loadName(load)))
+                                .arg(threads)
+                                .arg(threads == 1 ? QString() : QStringLiteral("s")));
+            series->setPointsVisible(true);
+            QPen pen(colours[static_cast<int>(load)]);
+            pen.setWidthF(2.0);
+            if (threads > 1) pen.setStyle(Qt::DashLine);
+            series->setPen(pen);
+            for (const Sample& s : samples) {
+                if (s.load != load || s.threads != threads || !(s.nsPerSpring > 0)) continue;
+                series->append(s.springs, s.nsPerSpring);
+                lo[0] = std::min(lo[0], s.springs);
+                hi[0] = std::max(hi[0], s.springs);
+                lo[1] = std::min(lo[1], s.nsPerSpring);
+                hi[1] = std::max(hi[1], s.nsPerSpring);
+            }
+            chart->addSeries(series);
+            series->attachAxis(x);
+            series->attachAxis(y);
         }
-        chart->addSeries(series);
-        series->attachAxis(x);
-        series->attachAxis(y);
-    }
     // Log axes do not follow the data by themselves.
     if (hi[0] > 0) {
         x->setRange(lo[0] / 1.5, hi[0] * 1.5);
@@ -153,6 +167,8 @@ int runScalingBench(const ScalingOptions& options) {
     // The press sphere ploughs the sheet from about 0.15 s to 0.75 s: the warm-up ends
     // as it bites and the timed steps end before it lifts off.
     const int warmup = 36, timed = options.quick ? 60 : 144, repeats = 3;
+    std::vector<int> threadCounts{1};
+    if (options.threads > 1) threadCounts.push_back(options.threads);
     const QDir dir(options.outputDir);
     if (!dir.exists() && !QDir().mkpath(dir.path()))
         throw UsageError{QStringLiteral("--output-dir: cannot create '%1'").arg(dir.path())};
@@ -164,9 +180,14 @@ int runScalingBench(const ScalingOptions& options) {
     QTextStream out(stdout), err(stderr);
     out << "build: " << QString::fromStdString(buildTuning()) << '\n'
         << "integrator: " << options.integrator << " (the editor's settings)\n"
-        << "threads: 1 (the step runs on one thread)\n"
-        << QStringLiteral("%1 %2 %3 %4 %5 %6\n")
+        << "threads: " << threadCounts.back() << " of the machine's "
+        << WorkerPool::machineThreads() << "; each sheet is timed on "
+        << (threadCounts.size() > 1 ? QStringLiteral("1 and %1").arg(threadCounts.back())
+                                    : QStringLiteral("1"))
+        << '\n'
+        << QStringLiteral("%1 %2 %3 %4 %5 %6 %7\n")
                .arg(QStringLiteral("load"), -24)
+               .arg(QStringLiteral("threads"), 7)
                .arg(QStringLiteral("resolution"), 10)
                .arg(QStringLiteral("vertices"), 9)
                .arg(QStringLiteral("springs"), 9)
@@ -175,48 +196,65 @@ int runScalingBench(const ScalingOptions& options) {
         << Qt::flush;
     std::vector<Sample> samples;
     for (Load load : {Load::Pressed, Load::Swinging, Load::Resting})
-        for (int resolution : resolutions) {
-            const Sample s = measure(load, resolution, options.integrator, warmup, timed, repeats);
-            if (!(s.stepsPerSecond > 0)) {
-                err << "paperfold: the " << loadName(load) << " sheet at resolution " << resolution
-                    << " blew up; it is left out\n";
-                continue;
+        for (int resolution : resolutions)
+            for (int threads : threadCounts) {
+                const Sample s =
+                    measure(load, resolution, options.integrator, threads, warmup, timed, repeats);
+                if (!(s.stepsPerSecond > 0)) {
+                    err << "paperfold: the " << loadName(load) << " sheet at resolution "
+                        << resolution << " blew up; it is left out\n";
+                    continue;
+                }
+                samples.push_back(s);
+                out << QStringLiteral("%1 %2 %3 %4 %5 %6 %7\n")
+                           .arg(QLatin1String(loadName(load)), -24)
+                           .arg(threads, 7)
+                           .arg(resolution, 10)
+                           .arg(s.vertices, 9)
+                           .arg(std::lround(s.springs), 9)
+                           .arg(s.stepsPerSecond, 9, 'f', 0)
+                           .arg(s.nsPerSpring, 10, 'f', 1)
+                    << Qt::flush;
             }
-            samples.push_back(s);
-            out << QStringLiteral("%1 %2 %3 %4 %5 %6\n")
-                       .arg(QLatin1String(loadName(load)), -24)
-                       .arg(resolution, 10)
-                       .arg(s.vertices, 9)
-                       .arg(std::lround(s.springs), 9)
-                       .arg(s.stepsPerSecond, 9, 'f', 0)
-                       .arg(s.nsPerSpring, 10, 'f', 1)
-                << Qt::flush;
-        }
 
     // The largest sheet measured that keeps up with real time, and where the limit lies:
     // the first sheet that did not keep up, scaled down by how far it fell short (the
     // cost per spring changes little between neighbouring sizes), or, if every sheet
     // kept up, the largest one scaled up.
     const double rate = realTimeRate(options.integrator);
-    for (Load load : {Load::Pressed, Load::Swinging}) {
-        double keptUp = 0, estimate = 0;
-        for (const Sample& s : samples) { // by growing size
-            if (s.load != load) continue;
-            estimate = s.springs * s.stepsPerSecond / rate;
-            if (s.stepsPerSecond < rate) break;
-            keptUp = s.springs;
+    for (int threads : threadCounts)
+        for (Load load : {Load::Pressed, Load::Swinging}) {
+            double keptUp = 0, estimate = 0;
+            for (const Sample& s : samples) { // by growing size
+                if (s.load != load || s.threads != threads) continue;
+                estimate = s.springs * s.stepsPerSecond / rate;
+                if (s.stepsPerSecond < rate) break;
+                keptUp = s.springs;
+            }
+            if (!(estimate > 0)) continue;
+            out << QStringLiteral("largest real-time sheet (%1 steps/s), %2, %3 thread(s): %4 "
+                                  "springs measured, about %5\n")
+                       .arg(rate, 0, 'f', 0)
+                       .arg(QLatin1String(loadName(load)))
+                       .arg(threads)
+                       .arg(std::lround(keptUp))
+                       .arg(std::lround(std::max(estimate, keptUp)));
         }
-        if (!(estimate > 0)) continue;
-        out << QStringLiteral("largest real-time sheet (%1 steps/s), %2: %3 springs measured, "
-                              "about %4\n")
-                   .arg(rate, 0, 'f', 0)
-                   .arg(QLatin1String(loadName(load)))
-                   .arg(std::lround(keptUp))
-                   .arg(std::lround(std::max(estimate, keptUp)));
-    }
+    // Speed-up on more threads, sheet by sheet (the same sheet, timed side by side).
+    if (threadCounts.size() > 1)
+        for (const Sample& many : samples) {
+            if (many.threads == 1) continue;
+            for (const Sample& one : samples)
+                if (one.threads == 1 && one.load == many.load && one.resolution == many.resolution)
+                    out << QStringLiteral("speed-up on %1 threads, %2, resolution %3: %4\n")
+                               .arg(many.threads)
+                               .arg(QLatin1String(loadName(many.load)))
+                               .arg(many.resolution)
+                               .arg(many.stepsPerSecond / one.stepsPerSecond, 0, 'f', 2);
+        }
     double active = 0, resting = 0;
     for (const Sample& s : samples) {
-        if (s.resolution != resolutions.back()) continue;
+        if (s.resolution != resolutions.back() || s.threads != 1) continue;
         if (s.load == Load::Pressed) active = s.nsPerSpring;
         if (s.load == Load::Resting) resting = s.nsPerSpring;
     }
@@ -230,13 +268,13 @@ int runScalingBench(const ScalingOptions& options) {
     c << "integrator,threads,load,resolution,vertices,springs,steps_per_second,ns_per_spring_"
          "step\n";
     for (const Sample& s : samples)
-        c << options.integrator << ",1," << loadName(s.load) << ',' << s.resolution << ','
-          << s.vertices << ',' << s.springs << ',' << s.stepsPerSecond << ',' << s.nsPerSpring
-          << '\n';
+        c << options.integrator << ',' << s.threads << ',' << loadName(s.load) << ','
+          << s.resolution << ',' << s.vertices << ',' << s.springs << ',' << s.stepsPerSecond << ','
+          << s.nsPerSpring << '\n';
     c.flush();
     QString error;
     if (!writeOutputFile(csvPath, csv.toUtf8(), &error) ||
-        !writePng(drawChart(samples, options.integrator), pngPath, &error)) {
+        !writePng(drawChart(samples, options.integrator, threadCounts), pngPath, &error)) {
         err << "paperfold: " << error << '\n';
         return 2;
     }

@@ -19,6 +19,7 @@ int runSimulate(const QStringList& arguments) {
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("simulate"), QStringLiteral("The subcommand."));
     addWorldOptions(parser);
+    addThreadsOption(parser);
     parser.addOptions({
         {QStringLiteral("steps"), QStringLiteral("Number of steps (default 600)."),
          QStringLiteral("n")},
@@ -35,6 +36,7 @@ int runSimulate(const QStringList& arguments) {
         integerOption(parser, QStringLiteral("steps"), 0, 1'000'000'000).value_or(600);
 
     Simulation sim(std::move(world));
+    sim.setThreads(threadsOption(parser));
     QElapsedTimer timer;
     timer.start();
     long long done = 0;
@@ -57,6 +59,7 @@ int runSimulate(const QStringList& arguments) {
     }
     QJsonObject stats = statsJson(sim.world(), wall, done);
     stats[QStringLiteral("diverged")] = diverged;
+    stats[QStringLiteral("threads")] = sim.threads();
     if (parser.isSet(QStringLiteral("stats"))) {
         QTextStream(stdout) << QJsonDocument(stats).toJson(QJsonDocument::Compact) << '\n';
     } else {

@@ -381,38 +381,69 @@ void computeBreakProbabilities(const Sheet& sheet, const SimParams& params, Brea
 }
 
 int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t step,
-                 BreakScratch& scratch) {
-    computeVertexNormals(sheet, scratch.normals);
-    scratch.touched.assign(sheet.tris.size(), 0);
+                 BreakScratch& scratch, const StepWorkers& workers) {
+    WorkerPool& pool = workers.poolOrSerial();
+    if (workers.stars)
+        computeVertexNormals(sheet, scratch.normals, pool, *workers.stars, scratch.triangleNormals);
+    else
+        computeVertexNormals(sheet, scratch.normals);
     const auto& normals = scratch.normals;
-    int breaks = 0;
     // Springs appended by a break in this pass are not visited until the next step.
     const Index count = sheet.springs.size();
     scratch.probability.assign(static_cast<std::size_t>(count), 0.0f);
     const ContractionReading reading = readingFor(params, normals);
-    EdgeLoad load;
-    for (Index s = 0; s < count; ++s) {
-        if (!breakCandidate(sheet, s, params.material.creaseSpacing, reading, load)) continue;
-        // A triangle split in this pass may have the new vertex opposite, which has no
-        // normal yet: its edges wait for the next step (and show 0 until then).
-        const auto& faces = sheet.springs.faces[s];
-        if (scratch.touched[faces[0]] || scratch.touched[faces[1]]) continue;
-        const double P = candidateProbability(sheet, normals, s, load, params.phi);
-        scratch.probability[s] = static_cast<float>(P);
-        double& peak = sheet.springs.peakContraction[s];
-        const double now = load.contraction;
-        const double growth = now - peak;
-        if (!(growth > 0.0)) continue;
-        peak = now;
-        const double p = breakProbabilityForGrowth(P, growth, params.breakReferenceContraction);
-        if (!(rng.uniform() < p)) continue;
-        const Index ev = breakEdge(sheet, s, normals, params.psi, step);
-        scratch.probability[s] = 0.0f; // a crease now: it cannot break again
-        for (Index t : sheet.events[ev].tris) {
-            if (t >= static_cast<Index>(scratch.touched.size())) scratch.touched.resize(t + 1, 0);
-            scratch.touched[t] = 1;
+
+    // Eq. 10 for every candidate, on the pool's threads: nothing here writes the sheet. The
+    // candidates bunch up among the sheet's first springs (the rest are creases and
+    // hinges), so the threads take small chunks in turn.
+    const int chunks = 8 * pool.threads();
+    scratch.candidates.resize(static_cast<std::size_t>(chunks));
+    for (auto& chunk : scratch.candidates) chunk.clear();
+    pool.forChunks(count, chunks, [&](int chunk, Index begin, Index end) {
+        auto& found = scratch.candidates[static_cast<std::size_t>(chunk)];
+        EdgeLoad load;
+        for (Index s = begin; s < end; ++s) {
+            if (!breakCandidate(sheet, s, params.material.creaseSpacing, reading, load)) continue;
+            found.push_back(
+                {s, candidateProbability(sheet, normals, s, load, params.phi), load.contraction});
         }
-        ++breaks;
+    });
+
+    // Then the draws and the breaks, in index order. A break moves no vertex and changes
+    // only the triangles it splits (marked touched, their edges wait for the next step)
+    // and the masses of its ends, so what was read above still holds for every other
+    // candidate, except that its ends may now be too light to give mass again.
+    scratch.touched.assign(sheet.tris.size(), 0);
+    scratch.massGiven.assign(static_cast<std::size_t>(sheet.verts.size()), 0);
+    auto& S = sheet.springs;
+    int breaks = 0;
+    for (const auto& chunk : scratch.candidates) {
+        for (const BreakScratch::Candidate& c : chunk) {
+            const Index s = c.spring;
+            // A triangle split in this pass may have the new vertex opposite, which has no
+            // normal yet: its edges wait for the next step (and show 0 until then).
+            const auto& faces = S.faces[s];
+            if (scratch.touched[faces[0]] || scratch.touched[faces[1]]) continue;
+            if ((scratch.massGiven[S.a[s]] || scratch.massGiven[S.b[s]]) && !leavesMass(sheet, s))
+                continue;
+            scratch.probability[s] = static_cast<float>(c.probability);
+            double& peak = S.peakContraction[s];
+            const double growth = c.contraction - peak;
+            if (!(growth > 0.0)) continue;
+            peak = c.contraction;
+            const double p =
+                breakProbabilityForGrowth(c.probability, growth, params.breakReferenceContraction);
+            if (!(rng.uniform() < p)) continue;
+            scratch.massGiven[S.a[s]] = scratch.massGiven[S.b[s]] = 1;
+            const Index ev = breakEdge(sheet, s, normals, params.psi, step);
+            scratch.probability[s] = 0.0f; // a crease now: it cannot break again
+            for (Index t : sheet.events[ev].tris) {
+                if (t >= static_cast<Index>(scratch.touched.size()))
+                    scratch.touched.resize(t + 1, 0);
+                scratch.touched[t] = 1;
+            }
+            ++breaks;
+        }
     }
     return breaks;
 }

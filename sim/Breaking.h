@@ -3,6 +3,7 @@
 #include "Params.h"
 #include "Rng.h"
 #include "Sheet.h"
+#include "StepWorkers.h"
 
 #include <vector>
 
@@ -60,10 +61,19 @@ double springBreakProbability(const Sheet& sheet, const std::vector<Vec3>& norma
 // Per-step scratch for the break pass, kept to avoid allocation in the step.
 struct BreakScratch {
     std::vector<Vec3> normals;
+    std::vector<Vec3> triangleNormals;
     std::vector<std::uint8_t> touched; // per triangle: changed this step
     // Per spring that existed when the pass began: Eq. 10 as the pass drew it. The
     // editor's overlay shows these rather than working Eq. 10 out a second time.
     std::vector<float> probability;
+    // A spring Eq. 10 applies to, as the pass found it before any break of the pass.
+    struct Candidate {
+        Index spring;
+        double probability;
+        double contraction;
+    };
+    std::vector<std::vector<Candidate>> candidates; // per chunk of the springs, in order
+    std::vector<std::uint8_t> massGiven;            // per vertex: gave mass to a break this pass
 };
 
 // Eq. 10 for every spring of the sheet as it stands, into scratch.probability (all zero
@@ -73,8 +83,10 @@ void computeBreakProbabilities(const Sheet& sheet, const SimParams& params, Brea
 // Tests every breakable contracted spring (as params read it: the chord, or the arc for
 // xpbd) with two faces in index order, at most one break per triangle per step. A spring whose
 // contraction has grown past its peak draws one uniform number from rng (breakProbabilityForGrowth)
-// and records the new peak. Returns the number of breaks.
+// and records the new peak. Returns the number of breaks. With workers, Eq. 10 is read on
+// their threads; the draws and the breaks are made in index order on the caller's, so the
+// pass gives the same bits on any number of threads.
 int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t step,
-                 BreakScratch& scratch);
+                 BreakScratch& scratch, const StepWorkers& workers = {});
 
 } // namespace pf

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Sheet.h"
+#include "WorkerPool.h"
 
 namespace pf {
 
@@ -14,9 +15,12 @@ struct SphereTool {
 
 // Vertices inside the sphere are moved to its surface and lose their inward velocity
 // relative to it; `keepTangential` (0..1) is the share of tangential velocity kept.
-void collideSphere(Sheet& sheet, const SphereTool& sphere, double keepTangential);
+// Each vertex on its own: the pool's threads share them.
+void collideSphere(Sheet& sheet, const SphereTool& sphere, double keepTangential,
+                   WorkerPool& pool = WorkerPool::serial());
 
 // Same for the ground plane y = height.
-void collideGround(Sheet& sheet, double height, double keepTangential);
+void collideGround(Sheet& sheet, double height, double keepTangential,
+                   WorkerPool& pool = WorkerPool::serial());
 
 } // namespace pf

@@ -122,7 +122,9 @@ void EditSession::replaceWorld(const World& world) {
     finished_.reset();    // an undo step of the old sheet's
     foldGroup_ = kNoFold; // a fold of the old sheet's
     const SphereTool tool = sim_.world().sphere;
+    const int threads = sim_.threads();
     sim_ = Simulation(world);
+    sim_.setThreads(threads);
     sim_.world().script.sphereKeys.clear();
     sim_.world().sphere.radius = tool.radius;
     sim_.world().sphere.active = tool.active;
@@ -417,7 +419,9 @@ void EditSession::swapSheet(const World& world, int sheet) {
     const SphereTool tool = now.sphere;
     const std::int64_t step = now.stepCount;
     const double time = now.time;
+    const int threads = sim_.threads();
     sim_ = Simulation(world);
+    sim_.setThreads(threads);
     World& w = sim_.world();
     w.script.sphereKeys.clear();
     w.sphere = tool;

@@ -28,26 +28,43 @@ Index insertHinge(Sheet& sheet, Index spring, double rest, std::int64_t step) {
     return event;
 }
 
-int runHingePass(Sheet& sheet, const SimParams& params, std::int64_t step) {
-    int inserted = 0;
-    const Index count = sheet.springs.size();
+int runHingePass(Sheet& sheet, const SimParams& params, std::int64_t step, HingeScratch& scratch,
+                 const StepWorkers& workers) {
+    WorkerPool& pool = workers.poolOrSerial();
     const double threshold2 = params.hingeThreshold * params.hingeThreshold;
-    for (Index s = 0; s < count; ++s) {
-        if (!canHinge(sheet, s)) continue;
+    // An insertion changes nothing another edge's test reads (it marks its own edge and
+    // appends a spring), so all edges can be tested first. The structural edges are the
+    // sheet's first springs, so the threads take small chunks in turn.
+    const int chunks = 8 * pool.threads();
+    scratch.found.resize(static_cast<std::size_t>(chunks));
+    for (auto& chunk : scratch.found) chunk.clear();
+    pool.forChunks(sheet.springs.size(), chunks, [&](int chunk, Index begin, Index end) {
+        auto& found = scratch.found[static_cast<std::size_t>(chunk)];
         const auto& S = sheet.springs;
-        const Index r = sheet.oppositeVertex(S.faces[s][0], S.a[s], S.b[s]);
-        const Index l = sheet.oppositeVertex(S.faces[s][1], S.a[s], S.b[s]);
         const auto& V = sheet.verts;
-        const double d2 = (V.x[r] - V.x[l]).squaredNorm();
-        const double rest2 = (V.X[r] - V.X[l]).squaredNorm();
-        // r on l (pins can hold them there) leaves a spring no direction and no positive
-        // rest length: the fold gets its hinge once they part.
-        if (!(d2 > 0.0 && d2 < threshold2 * rest2)) continue;
-
-        insertHinge(sheet, s, std::sqrt(d2), step);
-        ++inserted;
-    }
+        for (Index s = begin; s < end; ++s) {
+            if (!canHinge(sheet, s)) continue;
+            const Index r = sheet.oppositeVertex(S.faces[s][0], S.a[s], S.b[s]);
+            const Index l = sheet.oppositeVertex(S.faces[s][1], S.a[s], S.b[s]);
+            const double d2 = (V.x[r] - V.x[l]).squaredNorm();
+            const double rest2 = (V.X[r] - V.X[l]).squaredNorm();
+            // r on l (pins can hold them there) leaves a spring no direction and no
+            // positive rest length: the fold gets its hinge once they part.
+            if (d2 > 0.0 && d2 < threshold2 * rest2) found.push_back({s, std::sqrt(d2)});
+        }
+    });
+    int inserted = 0;
+    for (const auto& chunk : scratch.found)
+        for (const HingeScratch::Found& f : chunk) {
+            insertHinge(sheet, f.spring, f.rest, step);
+            ++inserted;
+        }
     return inserted;
+}
+
+int runHingePass(Sheet& sheet, const SimParams& params, std::int64_t step) {
+    HingeScratch scratch;
+    return runHingePass(sheet, params, step, scratch, {});
 }
 
 } // namespace pf

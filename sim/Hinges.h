@@ -2,6 +2,9 @@
 
 #include "Params.h"
 #include "Sheet.h"
+#include "StepWorkers.h"
+
+#include <vector>
 
 namespace pf {
 
@@ -9,7 +12,18 @@ namespace pf {
 // vertices r and l have come closer than params.hingeThreshold times their rest
 // distance |X_r - X_l|, insert an unbreakable hinge spring r-l whose rest length
 // is the current distance (the fold is remembered) and log it. Returns the count.
+// With workers, the edges are tested on their threads and the hinges inserted in index
+// order on the caller's: the same hinges on any number of threads.
+struct HingeScratch {
+    struct Found {
+        Index spring;
+        double rest;
+    };
+    std::vector<std::vector<Found>> found; // per chunk of the springs, in order
+};
 int runHingePass(Sheet& sheet, const SimParams& params, std::int64_t step);
+int runHingePass(Sheet& sheet, const SimParams& params, std::int64_t step, HingeScratch& scratch,
+                 const StepWorkers& workers);
 
 // Whether structural edge `spring` can take a hinge: it has two faces and none yet.
 bool canHinge(const Sheet& sheet, Index spring);

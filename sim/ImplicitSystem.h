@@ -2,6 +2,8 @@
 
 #include "Params.h"
 #include "Sheet.h"
+#include "VertexStars.h"
+#include "WorkerPool.h"
 
 #include <vector>
 
@@ -31,21 +33,35 @@ struct ImplicitSystem {
     std::vector<Mat3> diag;         // per vertex
     std::vector<Mat3> diagInv;      // per vertex, W_i^-1
     std::vector<Vec3> rhs;          // per vertex, b_i
+    // Per spring: what it adds to b at its end a (its end b gets the opposite).
+    std::vector<Vec3> springRhs;
 
     // scalar: the Kang & Cho 2004 simplification, every block k·I and c·I (no direction).
+    // The springs' blocks are worked out on the pool's threads, then each vertex gathers
+    // its own from its star: the same bits on any number of threads.
+    void assemble(const Sheet& sheet, const SimParams& params, bool scalar, WorkerPool& pool,
+                  const VertexStars& stars);
+    // On one thread, with stars of its own.
     void assemble(const Sheet& sheet, const SimParams& params, bool scalar);
 
     // y = A x.
     void multiply(const Sheet& sheet, const std::vector<Vec3>& x, std::vector<Vec3>& y) const;
+
+  private:
+    VertexStars ownStars_; // for the one-thread assemble
 };
 
 // One Jacobi sweep of Eq. 6: out_i = W_i^-1 (b_i + Σ_j G_ij in_j).
 void jacobiSweep(const Sheet& sheet, const ImplicitSystem& sys, const std::vector<Vec3>& in,
-                 std::vector<Vec3>& out);
+                 std::vector<Vec3>& out, WorkerPool& pool, const VertexStars& stars);
 
 // Eq. 6 with `sweeps` sweeps after the initial estimate. The initial estimate is
 // itself one sweep, from 0 (the paper: Δv⁽⁰⁾ = W_i^-1 b_i) or, with `start`, from
 // that guess (free vertices only; pinned ones stay 0).
+void solveJacobi(const Sheet& sheet, const ImplicitSystem& sys, int sweeps, std::vector<Vec3>& dv,
+                 std::vector<Vec3>& scratch, WorkerPool& pool, const VertexStars& stars,
+                 const Vec3* start = nullptr);
+// On one thread, with stars built for the call.
 void solveJacobi(const Sheet& sheet, const ImplicitSystem& sys, int sweeps, std::vector<Vec3>& dv,
                  std::vector<Vec3>& scratch, const Vec3* start = nullptr);
 

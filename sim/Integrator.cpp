@@ -26,9 +26,11 @@ const std::vector<std::string>& integratorNames() {
     return names;
 }
 
-void advancePositions(Sheet& sheet, double h) {
+void advancePositions(Sheet& sheet, double h, WorkerPool& pool) {
     auto& V = sheet.verts;
-    for (Index i = 0; i < V.size(); ++i) V.x[i] += h * V.v[i];
+    pool.forRanges(V.size(), [&](Index begin, Index end) {
+        for (Index i = begin; i < end; ++i) V.x[i] += h * V.v[i];
+    });
 }
 
 } // namespace pf

@@ -3,6 +3,7 @@
 #include "Collisions.h"
 #include "Params.h"
 #include "Sheet.h"
+#include "StepWorkers.h"
 
 #include <memory>
 #include <string>
@@ -29,6 +30,9 @@ class Integrator {
     // does not collide again after it); setContacts() is called before each advance().
     virtual bool resolvesContacts() const { return false; }
     virtual void setContacts(const ContactScene&) {}
+    // The simulation's threads and stars (refreshed before each advance()). An integrator
+    // that can use them keeps them; it works on one thread without.
+    virtual void lendWorkers(const StepWorkers&) {}
     // True while the sheet sleeps: at rest, untouched, and not integrated.
     virtual bool asleep() const { return false; }
 };
@@ -46,6 +50,6 @@ const std::vector<std::string>& integratorNames();
 bool keepsEdgeLengths(std::string_view integrator);
 
 // x += h v for every vertex; shared by all integrators after their velocity update.
-void advancePositions(Sheet& sheet, double h);
+void advancePositions(Sheet& sheet, double h, WorkerPool& pool = WorkerPool::serial());
 
 } // namespace pf

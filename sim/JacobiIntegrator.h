@@ -11,9 +11,12 @@ class JacobiIntegrator final : public Integrator {
   public:
     explicit JacobiIntegrator(bool scalarBlocks) : scalar_(scalarBlocks) {}
     void advance(Sheet& sheet, const SimParams& params) override;
+    void lendWorkers(const StepWorkers& workers) override { workers_ = workers; }
 
   private:
     bool scalar_;
+    StepWorkers workers_;
+    VertexStars ownStars_; // without lent ones
     ImplicitSystem system_;
     std::vector<Vec3> dv_, scratch_;
 };

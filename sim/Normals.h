@@ -1,6 +1,8 @@
 #pragma once
 
 #include "Sheet.h"
+#include "VertexStars.h"
+#include "WorkerPool.h"
 
 #include <vector>
 
@@ -11,5 +13,9 @@ namespace pf {
 void computeVertexNormals(const Sheet& sheet, std::vector<Vec3>& normals);
 void computeVertexNormals(const std::vector<Vec3>& x, const std::vector<Triangle>& tris,
                           std::vector<Vec3>& normals);
+// The same normals, bit for bit, on the pool's threads: each triangle's cross product into
+// triangleNormals, then each vertex sums its star's in the order the loop above adds them.
+void computeVertexNormals(const Sheet& sheet, std::vector<Vec3>& normals, WorkerPool& pool,
+                          const VertexStars& stars, std::vector<Vec3>& triangleNormals);
 
 } // namespace pf

@@ -1,7 +1,7 @@
 #include "Simulation.h"
 
-#include "Hinges.h"
-
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
@@ -24,11 +24,25 @@ bool Simulation::setIntegrator(const std::string& name) {
 
 namespace {
 
-bool stateIsSane(const Vertices& V) {
+bool stateIsSane(const Vertices& V, WorkerPool& pool) {
     const double limit2 = kDivergenceRadius * kDivergenceRadius;
-    for (Index i = 0; i < V.size(); ++i)
-        if (!(V.x[i].squaredNorm() < limit2) || !V.v[i].allFinite()) return false;
-    return true;
+    std::atomic<bool> insane{false};
+    pool.forRanges(V.size(), [&](Index begin, Index end) {
+        for (Index i = begin; i < end; ++i)
+            if (!(V.x[i].squaredNorm() < limit2) || !V.v[i].allFinite()) {
+                insane = true;
+                return;
+            }
+    });
+    return !insane;
+}
+
+// to = from, on the pool's threads.
+void copyOnto(std::vector<Vec3>& to, const std::vector<Vec3>& from, WorkerPool& pool) {
+    to.resize(from.size());
+    pool.forRanges(static_cast<Index>(from.size()), [&](Index begin, Index end) {
+        std::copy(from.begin() + begin, from.begin() + end, to.begin() + begin);
+    });
 }
 
 // Half a millimetre: a few sheets of paper, and within the tool's grip (kToolReach).
@@ -79,8 +93,12 @@ StepStatus Simulation::step() {
     // the desk (the press scene is drawn for them); real paper is not.
     if (integrator_->resolvesContacts()) keepToolAboveDesk(w);
 
-    savedX_ = sheet.verts.x;
-    savedV_ = sheet.verts.v;
+    stars_.refresh(sheet, *pool_);
+    const StepWorkers workers{pool_.get(), &stars_};
+    // Lent at every step: a Simulation moved into place since holds its stars elsewhere.
+    integrator_->lendWorkers(workers);
+    copyOnto(savedX_, sheet.verts.x, *pool_);
+    copyOnto(savedV_, sheet.verts.v, *pool_);
     savedPaper_ = sheet.paper;
     if (integrator_->resolvesContacts()) {
         integrator_->setContacts({w.sphere, w.groundEnabled, w.groundHeight});
@@ -89,12 +107,13 @@ StepStatus Simulation::step() {
         integrator_->advance(sheet, p);
         // Contact friction is expressed per reference step so it does not depend on h.
         const double ref = p.breakReferenceStep;
-        collideSphere(sheet, w.sphere, std::pow(1.0 - p.sphereFriction, p.dt / ref));
+        collideSphere(sheet, w.sphere, std::pow(1.0 - p.sphereFriction, p.dt / ref), *pool_);
         if (w.groundEnabled)
-            collideGround(sheet, w.groundHeight, std::pow(1.0 - p.groundFriction, p.dt / ref));
+            collideGround(sheet, w.groundHeight, std::pow(1.0 - p.groundFriction, p.dt / ref),
+                          *pool_);
     }
 
-    if (!stateIsSane(sheet.verts)) {
+    if (!stateIsSane(sheet.verts, *pool_)) {
         sheet.verts.x = savedX_;
         sheet.verts.v = savedV_;
         sheet.paper = savedPaper_;
@@ -107,14 +126,15 @@ StepStatus Simulation::step() {
     // keep drawing on edges left compressed where the sheet came to rest.
     if (damageAllowed_ && !integrator_->asleep()) {
         const Index before = sheet.verts.size();
-        if (p.breaking) lastBreaks_ = runBreakPass(sheet, p, w.rng, w.stepCount, breakScratch_);
+        if (p.breaking)
+            lastBreaks_ = runBreakPass(sheet, p, w.rng, w.stepCount, breakScratch_, workers);
         // Without breaking the next breakProbabilities gives zeros, at the cost of a fill.
         probabilitiesCurrent_ = p.breaking;
         // Eq. 11 lifts a new vertex off the edge toward the side it bends to, which
         // can be into the desk or the tool; an integrator that keeps the sheet out of
         // them gets the vertex back on their surface.
         if (integrator_->resolvesContacts()) keepOutOfContacts(w, before);
-        if (p.hinges) lastHinges_ = runHingePass(sheet, p, w.stepCount);
+        if (p.hinges) lastHinges_ = runHingePass(sheet, p, w.stepCount, hingeScratch_, workers);
         // Springs the two passes added are drawn for from the next step on.
         if (probabilitiesCurrent_)
             breakScratch_.probability.resize(static_cast<std::size_t>(sheet.springs.size()), 0.0f);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Breaking.h"
+#include "Hinges.h"
 #include "Integrator.h"
 #include "World.h"
 
@@ -32,6 +33,11 @@ class Simulation {
     bool setIntegrator(const std::string& name);
 
     StepStatus step();
+
+    // Threads the step runs on (default: all the machine's; 0 or less means those). The
+    // result is the same, bit for bit, on any number (test_determinism).
+    void setThreads(int threads) { pool_->setThreads(threads); }
+    int threads() const { return pool_->threads(); }
 
     // The sheet's state was set from outside (an undo giving back what the user saw): the
     // integrator starts afresh from it, as after loading a file.
@@ -67,6 +73,9 @@ class Simulation {
     World world_;
     std::unique_ptr<Integrator> integrator_;
     std::string integratorName_;
+    std::unique_ptr<WorkerPool> pool_ = std::make_unique<WorkerPool>(0);
+    VertexStars stars_; // current for the sheet from the start of each step's integration
+    HingeScratch hingeScratch_;
     // Mutable: breakProbabilities() fills it in when an edit left it behind the sheet.
     mutable BreakScratch breakScratch_;
     std::vector<Vec3> savedX_, savedV_;

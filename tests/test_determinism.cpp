@@ -4,8 +4,12 @@
 #include "SheetValidation.h"
 #include "Simulation.h"
 #include "SymplecticEulerIntegrator.h"
+#include "VertexStars.h"
+#include "WorkerPool.h"
 
 #include <QTest>
+#include <atomic>
+#include <vector>
 
 using namespace pf;
 
@@ -27,6 +31,39 @@ RunResult run(std::uint64_t seed, int steps) {
     const auto st = computeStats(sim.world().sheet);
     return {stateHash(sim.world().sheet), st.breaks, st.totalMass,
             validateSheet(sim.world().sheet)};
+}
+
+// A sheet large enough that the step's loops over vertices and over springs split
+// into as many parts as there are threads (WorkerPool::kMinPerPart per part).
+World largeScene(const std::string& scene, const std::string& integrator) {
+    SceneOptions o;
+    o.resolution = 60;
+    World w = *makeScene(scene, o);
+    w.params.integrator = integrator;
+    w.params.gravityOutsideFilter = true; // the editor's settings
+    return w;
+}
+
+struct ThreadedRun {
+    std::uint64_t hash = 0;
+    Index breaks = 0;
+    Index hinges = 0;
+    std::vector<float> probability;
+};
+
+ThreadedRun runOn(int threads, const std::string& scene, const std::string& integrator, int steps) {
+    Simulation sim(largeScene(scene, integrator));
+    sim.setThreads(threads);
+    if (sim.threads() != threads) return {};
+    for (int k = 0; k < steps; ++k)
+        if (sim.step() != StepStatus::Ok) return {};
+    const auto st = computeStats(sim.world().sheet);
+    return {stateHash(sim.world().sheet), st.breaks, st.hinges, sim.breakProbabilities()};
+}
+
+// Vertex i's springs as VertexStars lists them: spring id and end (2 s + 1 at b).
+std::vector<Index> starOf(const VertexStars& stars, Index i) {
+    return {stars.springsBegin(i), stars.springsEnd(i)};
 }
 
 } // namespace
@@ -90,6 +127,106 @@ class TestDeterminism : public QObject {
         const int steps = PAPERFOLD_TEST_SLOWDOWN > 1 ? 30 : 120;
         for (int k = 0; k < steps; ++k) QCOMPARE(sim.step(), StepStatus::Ok);
         QCOMPARE(validateSheet(sim.world().sheet), std::string());
+    }
+
+    // Issue 12: the step runs on any number of threads and gives the same bits: each
+    // vertex gathers from its star in the order one thread would add, the break pass
+    // draws and breaks in index order. Crumpled with breaks and hinges on the editor's
+    // settings, on a sheet whose loops are shared among the threads.
+    void sameBitsOnAnyThreadCount_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QString>("integrator");
+        QTest::addColumn<int>("steps");
+        QTest::newRow("press/jacobi") << "press"
+                                      << "jacobi" << 200;
+        QTest::newRow("compress/jacobi") << "compress"
+                                         << "jacobi" << 200;
+        QTest::newRow("crumple-cycles/jacobi-scalar") << "crumple-cycles"
+                                                      << "jacobi-scalar" << 200;
+    }
+    void sameBitsOnAnyThreadCount() {
+        QFETCH(QString, scene);
+        QFETCH(QString, integrator);
+        QFETCH(int, steps);
+        const World w = largeScene(scene.toStdString(), integrator.toStdString());
+        QCOMPARE(WorkerPool(2).partsFor(w.sheet.verts.size()), 2);
+        const ThreadedRun one = runOn(1, scene.toStdString(), integrator.toStdString(), steps);
+        QVERIFY2(one.breaks > 0 && one.hinges > 0, "the run must break and hinge to mean much");
+        for (int threads : {2, 3}) {
+            const ThreadedRun many =
+                runOn(threads, scene.toStdString(), integrator.toStdString(), steps);
+            QCOMPARE(many.hash, one.hash);
+            QCOMPARE(many.breaks, one.breaks);
+            QCOMPARE(many.hinges, one.hinges);
+            QVERIFY(many.probability == one.probability); // the overlay too
+        }
+    }
+
+    // The stars the step keeps up to date as breaks and hinges change the mesh (appended
+    // to, or rebuilt) are always the ones built afresh from the sheet.
+    void starsFollowTheMesh() {
+        Simulation sim(largeScene("press", "jacobi"));
+        VertexStars kept;
+        int appendedOnly = 0;
+        for (int k = 0; k < 300; ++k) {
+            const Index triangles = sim.world().sheet.triangleCount();
+            sim.step();
+            const Sheet& sheet = sim.world().sheet;
+            kept.refresh(sheet);
+            if (sheet.triangleCount() == triangles) ++appendedOnly;
+            if (k % 50 != 49) continue;
+            VertexStars fresh;
+            fresh.refresh(sheet);
+            QCOMPARE(kept.vertexCount(), sheet.verts.size());
+            for (Index i = 0; i < sheet.verts.size(); ++i) {
+                QCOMPARE(starOf(kept, i), starOf(fresh, i));
+                QCOMPARE(std::vector<Index>(kept.trianglesBegin(i), kept.trianglesEnd(i)),
+                         std::vector<Index>(fresh.trianglesBegin(i), fresh.trianglesEnd(i)));
+            }
+        }
+        QVERIFY(computeStats(sim.world().sheet).hinges > 0 && appendedOnly > 0);
+    }
+
+    // The pool covers a loop exactly once, in ranges, or in numbered chunks that are the
+    // range's stretches in order; a loop too small to split runs on the caller's thread.
+    void poolCoversEveryElementOnce() {
+        WorkerPool pool(3);
+        QCOMPARE(pool.threads(), 3);
+        const Index count = 3 * WorkerPool::kMinPerPart + 17;
+        QCOMPARE(pool.partsFor(count), 3);
+        QCOMPARE(pool.partsFor(WorkerPool::kMinPerPart), 1);
+        for (int round = 0; round < 50; ++round) {
+            std::vector<std::atomic<int>> seen(static_cast<std::size_t>(count));
+            std::atomic<int> ranges{0};
+            pool.forRanges(count, [&](Index begin, Index end) {
+                ++ranges;
+                for (Index i = begin; i < end; ++i) ++seen[static_cast<std::size_t>(i)];
+            });
+            for (const auto& n : seen) QCOMPARE(n.load(), 1);
+            QVERIFY(ranges >= 3); // shared out, not done in one piece
+
+            std::vector<std::atomic<int>> chunkSeen(static_cast<std::size_t>(count));
+            std::vector<Index> chunkBegin(24, -1), chunkEnd(24, -1);
+            pool.forChunks(count, 24, [&](int chunk, Index begin, Index end) {
+                chunkBegin[static_cast<std::size_t>(chunk)] = begin;
+                chunkEnd[static_cast<std::size_t>(chunk)] = end;
+                for (Index i = begin; i < end; ++i) ++chunkSeen[static_cast<std::size_t>(i)];
+            });
+            for (const auto& n : chunkSeen) QCOMPARE(n.load(), 1);
+            // Chunk c is the c-th stretch of the range, whichever thread took it.
+            QCOMPARE(chunkBegin.front(), Index{0});
+            QCOMPARE(chunkEnd.back(), count);
+            for (std::size_t c = 1; c < 24; ++c) QCOMPARE(chunkBegin[c], chunkEnd[c - 1]);
+        }
+        pool.setThreads(1);
+        QCOMPARE(pool.threads(), 1);
+        QCOMPARE(pool.partsFor(count), 1);
+        int calls = 0;
+        pool.forRanges(count, [&](Index begin, Index end) {
+            ++calls;
+            QVERIFY(begin == 0 && end == count);
+        });
+        QCOMPARE(calls, 1);
     }
 
     void divergedStepIsRolledBack() {

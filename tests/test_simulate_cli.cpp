@@ -14,6 +14,7 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThread>
 
 namespace {
 
@@ -158,6 +159,32 @@ class TestSimulateCli : public QObject {
         QCOMPARE(a[QStringLiteral("state_hash")], b[QStringLiteral("state_hash")]);
     }
 
+    // --threads changes who computes, never what: the same state on 1, 2 and 3 threads, on
+    // a sheet large enough to be shared among them, crumpled by the press tool.
+    void threadsGiveTheSameState() {
+        QStringList hashes;
+        for (const char* threads : {"1", "2", "3"}) {
+            const auto o = QJsonDocument::fromJson(
+                               runPaperfold({"simulate", "--scene", "press", "--resolution", "60",
+                                             "--steps", "200", "--gravity-outside-filter",
+                                             "--threads", threads, "--stats"})
+                                   .out)
+                               .object();
+            QCOMPARE(o[QStringLiteral("threads")].toInt(), QString::fromLatin1(threads).toInt());
+            QVERIFY(o[QStringLiteral("hinges")].toInt() > 0);
+            hashes << o[QStringLiteral("state_hash")].toString();
+        }
+        QCOMPARE(hashes.size(), 3);
+        QCOMPARE(hashes[1], hashes[0]);
+        QCOMPARE(hashes[2], hashes[0]);
+        // Without --threads: all the machine's.
+        const auto all = QJsonDocument::fromJson(
+                             runPaperfold({"simulate", "--steps", "1", "--stats"}).out)
+                             .object();
+        QCOMPARE(all[QStringLiteral("threads")].toInt(),
+                 std::max(1, static_cast<int>(QThread::idealThreadCount())));
+    }
+
     void optionsReachTheSimulation() {
         const auto o =
             QJsonDocument::fromJson(
@@ -184,6 +211,11 @@ class TestSimulateCli : public QObject {
             << QStringList{"simulate", "--resolution", "100000"} << "resolution";
         QTest::newRow("unknown integrator")
             << QStringList{"simulate", "--integrator", "rk4"} << "rk4";
+        QTest::newRow("zero threads") << QStringList{"simulate", "--threads", "0"} << "threads";
+        QTest::newRow("threads not a number")
+            << QStringList{"simulate", "--threads", "many"} << "threads";
+        QTest::newRow("too many threads")
+            << QStringList{"render", "--threads", "65", "--output", "x.png"} << "threads";
         QTest::newRow("unknown option") << QStringList{"simulate", "--frobnicate"} << "frobnicate";
         QTest::newRow("unknown command") << QStringList{"fly"} << "fly";
         QTest::newRow("stray argument") << QStringList{"simulate", "extra"} << "extra";
@@ -415,31 +447,37 @@ class TestSimulateCli : public QObject {
         if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("a timing sweep; run in the Release build");
         QTemporaryDir dir;
         const Result r = runPaperfold(
-            {"bench", "--scaling", "--quick", "--integrator", "xpbd", "--output-dir", dir.path()},
+            {"bench", "--scaling", "--quick", "--integrator", "xpbd", "--threads", "2",
+             "--output-dir", dir.path()},
             true);
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QVERIFY(r.out.startsWith("build: "));
-        QVERIFY(r.out.contains("threads: 1"));
-        QVERIFY(r.out.contains("largest real-time sheet (240 steps/s), press (tool crumpling)"));
+        QVERIFY(r.out.contains("threads: 2 of the machine's"));
+        QVERIFY(r.out.contains(
+            "largest real-time sheet (240 steps/s), press (tool crumpling), 2 thread(s)"));
+        QVERIFY(r.out.contains("speed-up on 2 threads, drape (swinging), resolution 27: "));
         QFile csv(dir.filePath(QStringLiteral("scaling.csv")));
         QVERIFY(csv.open(QIODevice::ReadOnly));
         const QStringList lines =
             QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-        QCOMPARE(lines.size(), 1 + 3 * 3); // header + 3 loads × 3 resolutions
+        QCOMPARE(lines.size(), 1 + 3 * 3 * 2); // header + 3 loads × 3 resolutions × 1, 2 threads
         QMap<QString, QList<double>> springs, cost;
         for (const QString& line : lines.mid(1)) {
             const QStringList f = line.split(QLatin1Char(','));
             QCOMPARE(f.size(), 8);
             QCOMPARE(f[0], QStringLiteral("xpbd"));
-            springs[f[2]] << f[5].toDouble();
-            cost[f[2]] << f[7].toDouble();
+            QVERIFY(f[1] == QStringLiteral("1") || f[1] == QStringLiteral("2"));
+            const QString series = f[2] + QLatin1Char('/') + f[1];
+            springs[series] << f[5].toDouble();
+            cost[series] << f[7].toDouble();
             // ns per spring per step is what the steps per second and springs say.
             const double product = f[7].toDouble() * f[6].toDouble() * f[5].toDouble();
             QVERIFY2(std::abs(product / 1e9 - 1.0) < 1e-4, qPrintable(line));
         }
         for (const auto& s : springs) QVERIFY(s.size() == 3 && s[0] < s[1] && s[1] < s[2]);
-        // Every load at every size was measured (a sheet that blew up would be left out).
-        QCOMPARE(cost.size(), 3);
+        // Every load at every size on each thread count was measured (a sheet that blew up
+        // would be left out).
+        QCOMPARE(cost.size(), 6);
         const QImage chart(dir.filePath(QStringLiteral("scaling.png")));
         QVERIFY(!chart.isNull());
         // An unknown integrator, and --integrator without --scaling, are refused.
@@ -536,10 +574,12 @@ class TestSimulateCli : public QObject {
         QString error;
         QVERIFY2(pf::saveRecording(session.log(), rec, &error), qPrintable(error));
         const QString sheet = dir.filePath(QStringLiteral("end.paper"));
-        const Result r = runPaperfold({"replay", rec, "--stats", "--save", sheet});
+        const Result r =
+            runPaperfold({"replay", rec, "--stats", "--save", sheet, "--threads", "2"});
         QCOMPARE(r.exitCode, 0);
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
         QCOMPARE(o[QStringLiteral("state_hash")].toString(), expected);
+        QCOMPARE(o[QStringLiteral("threads")].toInt(), 2);
         QCOMPARE(o[QStringLiteral("complete")].toBool(), true);
         QCOMPARE(o[QStringLiteral("steps")].toInt(), int(session.world().stepCount));
         QVERIFY(QFileInfo::exists(sheet));
