@@ -16,6 +16,7 @@
 #include "TestShard.h"
 #include "Viewport.h"
 #include "ViewportInput.h"
+#include "WorkerPool.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -533,6 +534,24 @@ class TestEditor : public QObject {
         // Undo goes back through the same dock.
         window->undoStack()->undo();
         QTRY_COMPARE(solver->gravityBox()->isChecked(), true);
+    }
+
+    // The Solver dock chooses how many cores step the sheet: all of them by default, the
+    // choice reaches the simulation (which reports it), is not an edit of the sheet (no
+    // undo step), and is kept for the next session.
+    void solverDockChoosesTheCores() {
+        SolverPanel* solver = window->solverPanel();
+        const int all = WorkerPool::machineThreads();
+        QCOMPARE(solver->threadsBox()->maximum(), all);
+        QCOMPARE(settledStatus(*window).threads, solver->threadsBox()->value());
+        const int undoSteps = window->undoStack()->count();
+        solver->threadsBox()->setValue(1);
+        QCOMPARE(settledStatus(*window).threads, 1);
+        QCOMPARE(QSettings().value(QStringLiteral("solver/threads")).toInt(), 1);
+        QCOMPARE(window->undoStack()->count(), undoSteps);
+        solver->threadsBox()->setValue(all);
+        QCOMPARE(settledStatus(*window).threads, all);
+        QCOMPARE(QSettings().value(QStringLiteral("solver/threads")).toInt(), all);
     }
 
     // Choosing card stock for the xpbd integrator makes the sheet 250/80 as heavy, and

@@ -722,6 +722,17 @@
         <translation>Schritte pro Sekunde</translation>
     </message>
     <message>
+        <source>Cores used</source>
+        <translation>Genutzte Kerne</translation>
+    </message>
+    <message numerus="yes">
+        <source>How many of this computer&apos;s %n cores step the sheet. The sheet moves the same, to the last bit, on any number; more are faster on large sheets.</source>
+        <translation>
+            <numerusform>Wie viele der %n Kerne dieses Computers das Blatt rechnen. Das Blatt bewegt sich bei jeder Zahl gleich, bis aufs letzte Bit; mehr sind bei großen Blättern schneller.</numerusform>
+            <numerusform>Wie viele der %n Kerne dieses Computers das Blatt rechnen. Das Blatt bewegt sich bei jeder Zahl gleich, bis aufs letzte Bit; mehr sind bei großen Blättern schneller.</numerusform>
+        </translation>
+    </message>
+    <message>
         <source>Gravity outside the implicit filter</source>
         <translation>Schwerkraft außerhalb des impliziten Filters</translation>
     </message>

@@ -717,6 +717,16 @@
         <translation>1秒あたりのステップ数</translation>
     </message>
     <message>
+        <source>Cores used</source>
+        <translation>使用コア数</translation>
+    </message>
+    <message numerus="yes">
+        <source>How many of this computer&apos;s %n cores step the sheet. The sheet moves the same, to the last bit, on any number; more are faster on large sheets.</source>
+        <translation>
+            <numerusform>このコンピューターの %n 個のコアのうち、用紙の計算に使う数。どの数でも用紙の動きは最後のビットまで同じで、大きな用紙では多いほど速くなります。</numerusform>
+        </translation>
+    </message>
+    <message>
         <source>Gravity outside the implicit filter</source>
         <translation>重力を陰的フィルターの外で積分</translation>
     </message>

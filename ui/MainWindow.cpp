@@ -22,6 +22,7 @@
 #include "UndoCommands.h"
 #include "Viewport.h"
 #include "ViewportInput.h"
+#include "WorkerPool.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -39,6 +40,7 @@
 #include <QToolBar>
 #include <QUndoStack>
 #include <QUndoView>
+#include <algorithm>
 #include <atomic>
 #include <thread>
 
@@ -133,6 +135,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(panel_, &ParameterPanel::toolRadiusChanged, input_, &ViewportInput::setToolRadius);
     connect(input_, &ViewportInput::toolRadiusChanged, panel_, &ParameterPanel::setToolRadius);
     connect(panel_, &ParameterPanel::pushDepthChanged, input_, &ViewportInput::setPushDepth);
+    // How many cores step the sheet: the user's choice, kept between sessions.
+    const int threads = std::clamp(
+        QSettings().value(QLatin1String(kThreadsSetting), WorkerPool::machineThreads()).toInt(), 1,
+        WorkerPool::machineThreads());
+    sim_->setThreads(threads);
+    solver_->showThreads(threads);
+    connect(solver_, &SolverPanel::threadsChanged, this, [this](int n) {
+        sim_->setThreads(n);
+        QSettings().setValue(QLatin1String(kThreadsSetting), n);
+    });
     hintShown_ = !QSettings().value(QLatin1String(kHintSetting)).toBool();
     connect(input_, &ViewportInput::acted, this, [this] {
         if (!hintShown_) return;

@@ -43,6 +43,7 @@ class MainWindow : public QMainWindow {
   public:
     // QSettings key: true once the first-run hint was dismissed.
     static constexpr const char* kHintSetting = "hints/firstRunDone";
+    static constexpr const char* kThreadsSetting = "solver/threads";
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 

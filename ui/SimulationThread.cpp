@@ -95,6 +95,9 @@ void SimulationThread::post(std::function<void(SimulationWorker&)> command) {
 void SimulationThread::setPlaying(bool playing) {
     PF_POST(setPlaying(playing));
 }
+void SimulationThread::setThreads(int threads) {
+    PF_POST(setThreads(threads));
+}
 void SimulationThread::stepOnce() {
     PF_POST(stepOnce());
 }

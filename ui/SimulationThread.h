@@ -37,6 +37,8 @@ class SimulationThread : public QObject {
     void setPlaying(bool playing);
     void stepOnce();
     void setParams(const SimParams& params);
+    // The threads the step runs on (Simulation::setThreads): not an edit of the sheet.
+    void setThreads(int threads);
     void replaceWorld(const World& world); // New, Open
     // The tool: where the user points (target centre), its radius, and whether the
     // mouse button is down (a push stroke lasts from press to release).

@@ -44,6 +44,11 @@ void SimulationWorker::stepOnce() {
     publish(t.nsecsElapsed() * 1e-9);
 }
 
+void SimulationWorker::setThreads(int threads) {
+    session_.simulation().setThreads(threads);
+    publish(0.0);
+}
+
 void SimulationWorker::setParams(const SimParams& params) {
     session_.setParams(params);
     publish(0.0);
@@ -143,6 +148,7 @@ void SimulationWorker::publish(double stepSeconds) {
     st.breaksLastSecond = static_cast<int>(breaksSince(w.sheet, w.stepCount - secondOfSteps));
     st.maxStrain = stats.maxStrain;
     st.rmsStrain = stats.rmsStrain;
+    st.threads = session_.simulation().threads();
     st.playing = playing_;
     st.folding = session_.folding();
     st.sheetHash = editedStateHash(w.sheet);

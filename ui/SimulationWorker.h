@@ -28,6 +28,7 @@ class SimulationWorker : public QObject {
     void setPlaying(bool playing);
     void stepOnce();
     void setParams(const SimParams& params);
+    void setThreads(int threads);
     void replaceWorld(const World& world);
     void setTool(const Vec3& target, double radius, bool visible, bool pressed);
     void grab(const Vec3& target, bool held, bool begin);

@@ -3,6 +3,7 @@
 #include "Integrator.h"
 #include "Material.h"
 #include "SimulationThread.h"
+#include "WorkerPool.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -31,6 +32,10 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
     stepsPerSecond_->setRange(60, 7680);
     stepsPerSecond_->setSingleStep(60);
     gravityOutside_ = new QCheckBox(this);
+    threadsLabel_ = new QLabel(this);
+    threads_ = new QSpinBox(this);
+    threads_->setRange(1, WorkerPool::machineThreads());
+    threads_->setValue(WorkerPool::machineThreads());
     stepTimeLabel_ = new QLabel(this);
     stepTime_ = new QLabel(this);
     strainTitle_ = new QLabel(this);
@@ -43,7 +48,8 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
          std::initializer_list<std::pair<QLabel*, QWidget*>>{{integratorLabel_, integrator_},
                                                              {materialLabel_, material_},
                                                              {iterationsLabel_, iterations_},
-                                                             {dtLabel_, stepsPerSecond_}}) {
+                                                             {dtLabel_, stepsPerSecond_},
+                                                             {threadsLabel_, threads_}}) {
         grid->addWidget(label, r, 0);
         grid->addWidget(field, r++, 1);
     }
@@ -66,7 +72,10 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
         if (materialPreset(name.toStdString(), m))
             emitEdit(QStringLiteral("material"), [m](SimParams& p) { p.material = m; });
     });
-    for (QSpinBox* box : {iterations_, stepsPerSecond_}) box->setKeyboardTracking(false);
+    for (QSpinBox* box : {iterations_, stepsPerSecond_, threads_}) box->setKeyboardTracking(false);
+    connect(threads_, &QSpinBox::valueChanged, this, [this](int n) {
+        if (!updating_) emit threadsChanged(n);
+    });
     connect(iterations_, &QSpinBox::valueChanged, this, [this](int k) {
         emitEdit(QStringLiteral("iterations"), [k](SimParams& p) { p.iterations = k; });
     });
@@ -92,6 +101,12 @@ void SolverPanel::showParams(const SimParams& params) {
     iterations_->setValue(params.iterations);
     stepsPerSecond_->setValue(static_cast<int>(std::lround(1.0 / params.dt)));
     gravityOutside_->setChecked(params.gravityOutsideFilter);
+    updating_ = false;
+}
+
+void SolverPanel::showThreads(int threads) {
+    updating_ = true;
+    threads_->setValue(threads);
     updating_ = false;
 }
 
@@ -124,6 +139,11 @@ void SolverPanel::retranslate() {
     gravityOutside_->setToolTip(tr("Start the Jacobi iteration at Δv = h·g. The paper's step "
                                    "divides gravity by W, so a hanging sheet falls at a fraction "
                                    "of g; this keeps free fall exact at the same stability."));
+    threadsLabel_->setText(tr("Cores used"));
+    threads_->setToolTip(tr("How many of this computer's %n cores step the sheet. The sheet "
+                            "moves the same, to the last bit, on any number; more are faster on "
+                            "large sheets.",
+                            nullptr, WorkerPool::machineThreads()));
     stepTimeLabel_->setText(tr("Step time"));
     strainTitle_->setText(tr("Strain"));
     strain_->setToolTip(tr("|l/l0 - 1| over the structural springs, live"));

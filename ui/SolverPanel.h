@@ -24,11 +24,13 @@ class SolverPanel : public QWidget {
 
     void showParams(const SimParams& params); // without emitting
     void showStatus(const SimulationStatus& status);
+    void showThreads(int threads); // without emitting
 
     QComboBox* integratorBox() const { return integrator_; }
     QComboBox* materialBox() const { return material_; }
     QSpinBox* iterationsBox() const { return iterations_; }
     QCheckBox* gravityBox() const { return gravityOutside_; }
+    QSpinBox* threadsBox() const { return threads_; }
     QLabel* strainLabel() const { return strain_; }
     QLabel* breakRateLabel() const { return breakRate_; }
 
@@ -36,6 +38,8 @@ class SolverPanel : public QWidget {
     // A user edit of the parameter `what` (each its own undo step).
     void edited(const QString& what, int drag, const pf::ParamChange& change);
     void openChartRequested();
+    // The user chose how many threads step the sheet.
+    void threadsChanged(int threads);
 
   protected:
     void changeEvent(QEvent* event) override;
@@ -54,6 +58,8 @@ class SolverPanel : public QWidget {
     QSpinBox* iterations_ = nullptr;
     QSpinBox* stepsPerSecond_ = nullptr;
     QCheckBox* gravityOutside_ = nullptr;
+    QLabel* threadsLabel_ = nullptr;
+    QSpinBox* threads_ = nullptr;
     QLabel* stepTime_ = nullptr;
     QLabel* strain_ = nullptr;
     QLabel *breakRateTitle_ = nullptr, *breakRate_ = nullptr;
