@@ -4,8 +4,8 @@
 #   scripts/tsan.sh            every suite but the physics-only ones (tests/CMakeLists.txt)
 #   scripts/tsan.sh --threads  only the suites that run more than one thread of the
 #                              project's (the editor with its simulation thread and its
-#                              export thread, and the viewport): what CI runs, to stay
-#                              within its time
+#                              export thread, the viewport, and the step on several
+#                              threads): what CI runs, to stay within its time
 # Other arguments go to ctest, e.g. `scripts/tsan.sh -R test_editor`
 # (both halves of the editor suite, test_editor.1 and .2).
 set -euo pipefail
@@ -14,9 +14,10 @@ targets=()
 ctest_args=()
 for arg in "$@"; do
     if [ "$arg" = "--threads" ]; then
-        targets=(--target test_editor test_viewport)
-        # Two at a time: the editor suite's two halves first, the viewport after them.
-        ctest_args+=(-R '^(test_editor\.[0-9]+|test_viewport)$' -j2)
+        targets=(--target test_editor test_viewport test_determinism)
+        # Two at a time: the editor suite's two halves first, the viewport and the step's
+        # worker threads after them.
+        ctest_args+=(-R '^(test_editor\.[0-9]+|test_viewport|test_determinism_threads)$' -j2)
     else
         ctest_args+=("$arg")
     fi

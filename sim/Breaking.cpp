@@ -396,7 +396,7 @@ int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t s
     // Eq. 10 for every candidate, on the pool's threads: nothing here writes the sheet. The
     // candidates bunch up among the sheet's first springs (the rest are creases and
     // hinges), so the threads take small chunks in turn.
-    const int chunks = 8 * pool.threads();
+    const int chunks = WorkerPool::kChunksPerThread * pool.threads();
     scratch.candidates.resize(static_cast<std::size_t>(chunks));
     for (auto& chunk : scratch.candidates) chunk.clear();
     pool.forChunks(count, chunks, [&](int chunk, Index begin, Index end) {

@@ -35,7 +35,7 @@ int runHingePass(Sheet& sheet, const SimParams& params, std::int64_t step, Hinge
     // An insertion changes nothing another edge's test reads (it marks its own edge and
     // appends a spring), so all edges can be tested first. The structural edges are the
     // sheet's first springs, so the threads take small chunks in turn.
-    const int chunks = 8 * pool.threads();
+    const int chunks = WorkerPool::kChunksPerThread * pool.threads();
     scratch.found.resize(static_cast<std::size_t>(chunks));
     for (auto& chunk : scratch.found) chunk.clear();
     pool.forChunks(sheet.springs.size(), chunks, [&](int chunk, Index begin, Index end) {

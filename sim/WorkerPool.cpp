@@ -53,7 +53,7 @@ void WorkerPool::setThreads(int threads) {
     // More threads than cores: a spinning thread would hold a core from one with work.
     spin_ = wanted <= machineThreads() ? kSpin : std::chrono::microseconds(0);
     for (int part = 1; part < wanted; ++part)
-        workers_.emplace_back([this, now = generation_.load()] { workerLoop(now); });
+        workers_.emplace_back([this, part, now = generation_.load()] { workerLoop(part, now); });
 }
 
 void WorkerPool::stop() {
@@ -71,8 +71,8 @@ int WorkerPool::partsFor(Index count) const {
     return static_cast<int>(std::clamp<Index>(byGrain, 1, threads()));
 }
 
-void WorkerPool::takeChunks() {
-    for (int c = nextChunk_++; c < chunks_; c = nextChunk_++) {
+void WorkerPool::takeChunks(int thread) {
+    for (int c = thread; c < chunks_; c += threads()) {
         const Index begin = chunkBegin(count_, chunks_, c),
                     end = chunkBegin(count_, chunks_, c + 1);
         if (begin < end) call_(work_, c, begin, end);
@@ -82,7 +82,6 @@ void WorkerPool::takeChunks() {
 void WorkerPool::run(Index count, int chunks, void* work, Trampoline call) {
     count_ = count;
     chunks_ = chunks;
-    nextChunk_ = 0;
     work_ = work;
     call_ = call;
     pending_ = threads() - 1;
@@ -93,7 +92,7 @@ void WorkerPool::run(Index count, int chunks, void* work, Trampoline call) {
         std::lock_guard lock(mutex_);
         wake_.notify_all();
     }
-    takeChunks();
+    takeChunks(0);
     if (spinUntil([this] { return pending_ == 0; }, spin_)) return;
     std::unique_lock lock(mutex_);
     callerAsleep_ = true;
@@ -101,7 +100,7 @@ void WorkerPool::run(Index count, int chunks, void* work, Trampoline call) {
     callerAsleep_ = false;
 }
 
-void WorkerPool::workerLoop(std::uint64_t seen) {
+void WorkerPool::workerLoop(int thread, std::uint64_t seen) {
     for (;;) {
         const auto raised = [&] { return stopping_ || generation_ != seen; };
         if (!spinUntil(raised, spin_)) {
@@ -112,7 +111,7 @@ void WorkerPool::workerLoop(std::uint64_t seen) {
         }
         if (stopping_) return;
         seen = generation_;
-        takeChunks();
+        takeChunks(thread);
         if (--pending_ == 0 && callerAsleep_) {
             std::lock_guard lock(mutex_);
             done_.notify_one();

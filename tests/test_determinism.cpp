@@ -148,6 +148,9 @@ class TestDeterminism : public QObject {
         QFETCH(QString, scene);
         QFETCH(QString, integrator);
         QFETCH(int, steps);
+        // Sanitized builds (ThreadSanitizer runs this for races in the pool) take the
+        // first half: the tool has bitten by then, and broken and hinged.
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) steps /= 2;
         const World w = largeScene(scene.toStdString(), integrator.toStdString());
         QCOMPARE(WorkerPool(2).partsFor(w.sheet.verts.size()), 2);
         const ThreadedRun one = runOn(1, scene.toStdString(), integrator.toStdString(), steps);
@@ -203,7 +206,7 @@ class TestDeterminism : public QObject {
                 for (Index i = begin; i < end; ++i) ++seen[static_cast<std::size_t>(i)];
             });
             for (const auto& n : seen) QCOMPARE(n.load(), 1);
-            QVERIFY(ranges >= 3); // shared out, not done in one piece
+            QCOMPARE(ranges.load(), 3); // one range per thread
 
             std::vector<std::atomic<int>> chunkSeen(static_cast<std::size_t>(count));
             std::vector<Index> chunkBegin(24, -1), chunkEnd(24, -1);
