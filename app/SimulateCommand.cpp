@@ -31,12 +31,13 @@ int runSimulate(const QStringList& arguments) {
     const QStringList inputs = worldInputs(parser);
     if (parser.isSet(QStringLiteral("save")))
         requireWritable(QStringLiteral("save"), parser.value(QStringLiteral("save")), inputs);
-    World world = worldFromOptions(parser);
     const long long steps =
         integerOption(parser, QStringLiteral("steps"), 0, 1'000'000'000).value_or(600);
+    const int threads = threadsOption(parser);
+    World world = worldFromOptions(parser);
 
     Simulation sim(std::move(world));
-    sim.setThreads(threadsOption(parser));
+    sim.setThreads(threads);
     QElapsedTimer timer;
     timer.start();
     long long done = 0;

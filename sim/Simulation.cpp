@@ -98,8 +98,8 @@ StepStatus Simulation::step() {
     // measured slower than one thread (0.8 times at 1,000-3,000 vertices).
     WorkerPool& pool =
         sheet.verts.size() >= 2 * WorkerPool::kMinPerPart ? *pool_ : WorkerPool::serial();
-    stars_.refresh(sheet, pool);
-    const StepWorkers workers{&pool, &stars_};
+    stars_->refresh(sheet, pool);
+    const StepWorkers workers{&pool, stars_.get()};
     // Lent at every step: a Simulation moved into place since holds its stars elsewhere.
     integrator_->lendWorkers(workers);
     copyOnto(savedX_, sheet.verts.x, pool);
@@ -139,7 +139,9 @@ StepStatus Simulation::step() {
         // can be into the desk or the tool; an integrator that keeps the sheet out of
         // them gets the vertex back on their surface.
         if (integrator_->resolvesContacts()) keepOutOfContacts(w, before);
-        if (p.hinges) lastHinges_ = runHingePass(sheet, p, w.stepCount, hingeScratch_, workers);
+        // The breaks may have changed the mesh since the stars were refreshed: not lent.
+        if (p.hinges)
+            lastHinges_ = runHingePass(sheet, p, w.stepCount, hingeScratch_, {&pool, nullptr});
         // Springs the two passes added are drawn for from the next step on.
         if (probabilitiesCurrent_)
             breakScratch_.probability.resize(static_cast<std::size_t>(sheet.springs.size()), 0.0f);

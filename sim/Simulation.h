@@ -74,7 +74,9 @@ class Simulation {
     std::unique_ptr<Integrator> integrator_;
     std::string integratorName_;
     std::unique_ptr<WorkerPool> pool_ = std::make_unique<WorkerPool>(0);
-    VertexStars stars_; // current for the sheet from the start of each step's integration
+    // Current for the sheet from the start of each step's integration. On the heap, like
+    // the pool, so that what the integrator was lent stays put when a Simulation moves.
+    std::unique_ptr<VertexStars> stars_ = std::make_unique<VertexStars>();
     HingeScratch hingeScratch_;
     // Mutable: breakProbabilities() fills it in when an edit left it behind the sheet.
     mutable BreakScratch breakScratch_;

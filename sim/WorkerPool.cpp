@@ -37,7 +37,7 @@ WorkerPool::~WorkerPool() {
 }
 
 int WorkerPool::machineThreads() {
-    return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    return std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 64);
 }
 
 WorkerPool& WorkerPool::serial() {
@@ -47,12 +47,16 @@ WorkerPool& WorkerPool::serial() {
 
 void WorkerPool::setThreads(int threads) {
     const int wanted = std::clamp(threads > 0 ? threads : machineThreads(), 1, 64);
-    if (wanted == this->threads()) return;
+    if (wanted == threads_) return;
     stop();
+    threads_ = wanted;
+}
+
+void WorkerPool::startWorkers() {
     stopping_ = false;
     // More threads than cores: a spinning thread would hold a core from one with work.
-    spin_ = wanted <= machineThreads() ? kSpin : std::chrono::microseconds(0);
-    for (int part = 1; part < wanted; ++part)
+    spin_ = threads_ <= machineThreads() ? kSpin : std::chrono::microseconds(0);
+    for (int part = 1; part < threads_; ++part)
         workers_.emplace_back([this, part, now = generation_.load()] { workerLoop(part, now); });
 }
 
@@ -80,6 +84,7 @@ void WorkerPool::takeChunks(int thread) {
 }
 
 void WorkerPool::run(Index count, int chunks, void* work, Trampoline call) {
+    if (workers_.empty()) startWorkers();
     count_ = count;
     chunks_ = chunks;
     work_ = work;

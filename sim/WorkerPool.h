@@ -35,10 +35,11 @@ class WorkerPool {
     WorkerPool(const WorkerPool&) = delete;
     WorkerPool& operator=(const WorkerPool&) = delete;
 
-    int threads() const { return static_cast<int>(workers_.size()) + 1; }
-    // The threads this machine offers (at least 1).
+    int threads() const { return threads_; }
+    // The threads this machine offers (1 to 64).
     static int machineThreads();
-    // Clamps to [1, 64]; 0 or less means machineThreads().
+    // Clamps to [1, 64]; 0 or less means machineThreads(). The threads start when a loop
+    // first needs them: a pool whose loops are all small (a small sheet's) starts none.
     void setThreads(int threads);
 
     // A pool of one thread that never starts any: for callers without a pool.
@@ -91,6 +92,9 @@ class WorkerPool {
         return static_cast<Index>(static_cast<std::int64_t>(count) * chunk / chunks);
     }
 
+    void startWorkers();
+
+    int threads_ = 1;
     std::vector<std::thread> workers_;
     // A part takes tens of microseconds to a few milliseconds and the step's serial work
     // between parts less, so waiting threads spin for a while before they sleep: waking a

@@ -135,15 +135,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(panel_, &ParameterPanel::toolRadiusChanged, input_, &ViewportInput::setToolRadius);
     connect(input_, &ViewportInput::toolRadiusChanged, panel_, &ParameterPanel::setToolRadius);
     connect(panel_, &ParameterPanel::pushDepthChanged, input_, &ViewportInput::setPushDepth);
-    // How many cores step the sheet: the user's choice, kept between sessions.
-    const int threads = std::clamp(
-        QSettings().value(QLatin1String(kThreadsSetting), WorkerPool::machineThreads()).toInt(), 1,
-        WorkerPool::machineThreads());
+    // How many cores step the sheet: the user's choice, kept between sessions; 0 (and
+    // anything unreadable) means all of them, on whatever machine the next session runs.
+    const int all = WorkerPool::machineThreads();
+    const int saved = QSettings().value(QLatin1String(kThreadsSetting), 0).toInt();
+    const int threads = saved > 0 ? std::min(saved, all) : all;
     sim_->setThreads(threads);
     solver_->showThreads(threads);
     connect(solver_, &SolverPanel::threadsChanged, this, [this](int n) {
         sim_->setThreads(n);
-        QSettings().setValue(QLatin1String(kThreadsSetting), n);
+        QSettings().setValue(QLatin1String(kThreadsSetting),
+                             n == WorkerPool::machineThreads() ? 0 : n);
     });
     hintShown_ = !QSettings().value(QLatin1String(kHintSetting)).toBool();
     connect(input_, &ViewportInput::acted, this, [this] {
