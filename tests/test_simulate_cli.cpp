@@ -178,9 +178,9 @@ class TestSimulateCli : public QObject {
         QCOMPARE(hashes[1], hashes[0]);
         QCOMPARE(hashes[2], hashes[0]);
         // Without --threads: all the machine's.
-        const auto all = QJsonDocument::fromJson(
-                             runPaperfold({"simulate", "--steps", "1", "--stats"}).out)
-                             .object();
+        const auto all =
+            QJsonDocument::fromJson(runPaperfold({"simulate", "--steps", "1", "--stats"}).out)
+                .object();
         QCOMPARE(all[QStringLiteral("threads")].toInt(),
                  std::max(1, static_cast<int>(QThread::idealThreadCount())));
     }
@@ -446,10 +446,9 @@ class TestSimulateCli : public QObject {
         // A benchmark, not a timed test: what is checked is what it reports, not how fast.
         if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("a timing sweep; run in the Release build");
         QTemporaryDir dir;
-        const Result r = runPaperfold(
-            {"bench", "--scaling", "--quick", "--integrator", "xpbd", "--threads", "2",
-             "--output-dir", dir.path()},
-            true);
+        const Result r = runPaperfold({"bench", "--scaling", "--quick", "--integrator", "xpbd",
+                                       "--threads", "2", "--output-dir", dir.path()},
+                                      true);
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QVERIFY(r.out.startsWith("build: "));
         QVERIFY(r.out.contains("threads: 2 of the machine's"));
