@@ -16,8 +16,7 @@ QByteArray shaderSource(const char* name) {
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
-constexpr int kSurfaceFloats = 12; // position 3, normal 3, colour 4, texture coordinate 2
-constexpr int kLineFloats = 7;     // position 3, colour 4
+constexpr int kLineFloats = 7; // position 3, colour 4
 
 void pushLine(std::vector<float>& out, const Vec3& a, const Vec3& b, const float* rgba) {
     for (const Vec3* p : {&a, &b}) {
@@ -25,15 +24,6 @@ void pushLine(std::vector<float>& out, const Vec3& a, const Vec3& b, const float
                                static_cast<float>(p->z())});
         out.insert(out.end(), rgba, rgba + 4);
     }
-}
-
-// Empties `v` for a refill of `size` elements. The capacity is kept for the next frame
-// unless it is more than twice what is needed: a sheet that was crumpled and then
-// replaced by a fresh one must not keep the crumpled surface's buffers.
-template <typename T> void clearFor(std::vector<T>& v, std::size_t size) {
-    if (v.capacity() > 2 * size) std::vector<T>().swap(v);
-    v.clear();
-    v.reserve(size);
 }
 
 } // namespace
@@ -135,7 +125,7 @@ bool SheetRenderer::initialize(const GlFunctions& gl, QString* error) {
 
 void SheetRenderer::setSurfaceLayout() {
     const GlFunctions& gl = *gl_;
-    const GLsizei stride = kSurfaceFloats * sizeof(float);
+    const GLsizei stride = DrawnSurface::kFloatsPerVertex * sizeof(float);
     gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
     gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
                            reinterpret_cast<void*>(3 * sizeof(float)));
@@ -206,43 +196,20 @@ void SheetRenderer::setVec3(GLuint prog, const char* name, const float* v) {
 }
 
 void SheetRenderer::uploadSurface(const SheetSnapshot& snap, const RenderOptions& options) {
-    const bool strain = options.overlays & OverlayStrain;
-    const SurfaceKey key{snap.serial, options.subdivision, options.sigma, options.strainRange,
-                         strain};
+    const SurfaceKey key = surfaceKeyOf(snap, options);
     if (snap.serial != 0 && key == surfaceKey_) return;
     surfaceKey_ = key;
-    const SurfaceMesh mesh = subdivide(snap.x, snap.tris, strain ? &snap.vertexStrain : nullptr,
-                                       &snap.X, options.sigma, options.subdivision);
-    surfaceHasUvs_ = !mesh.uvs.empty();
-    clearFor(vertexData_, mesh.positions.size() * kSurfaceFloats);
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        Vec3 p = mesh.positions[i];
-        // A Hermite midpoint can dip below paper lying on the desk; paper cannot.
-        if (snap.groundEnabled) p.y() = std::max(p.y(), snap.groundHeight);
-        const Vec3& n = mesh.normals[i];
-        vertexData_.insert(vertexData_.end(), {float(p.x()), float(p.y()), float(p.z()),
-                                               float(n.x()), float(n.y()), float(n.z())});
-        if (strain) {
-            const auto c = heatColor(mesh.scalars[i] / options.strainRange);
-            vertexData_.insert(vertexData_.end(), {c[0], c[1], c[2], 1.0f});
-        } else {
-            vertexData_.insert(vertexData_.end(), {0.0f, 0.0f, 0.0f, 0.0f});
-        }
-        if (surfaceHasUvs_)
-            vertexData_.insert(vertexData_.end(), {float(mesh.uvs[i].x()), float(mesh.uvs[i].y())});
-        else
-            vertexData_.insert(vertexData_.end(), {0.0f, 0.0f});
-    }
-    clearFor(indexData_, mesh.triangles.size() * 3);
-    for (const auto& t : mesh.triangles) indexData_.insert(indexData_.end(), t.begin(), t.end());
-    surfaceIndexCount_ = static_cast<GLsizei>(indexData_.size());
+    buildDrawnSurface(snap, options, surface_);
+    surfaceHasUvs_ = surface_.hasUvs;
+    surfaceIndexCount_ = static_cast<GLsizei>(surface_.indices.size());
     const GlFunctions& gl = *gl_;
     gl.BindVertexArray(surfaceVao_);
     gl.BindBuffer(GL_ARRAY_BUFFER, surfaceVbo_);
-    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertexData_.size() * sizeof(float)),
-                  vertexData_.data(), GL_STREAM_DRAW);
-    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indexData_.size() * 4),
-                  indexData_.data(), GL_STREAM_DRAW);
+    gl.BufferData(GL_ARRAY_BUFFER,
+                  static_cast<GLsizeiptr>(surface_.vertices.size() * sizeof(float)),
+                  surface_.vertices.data(), GL_STREAM_DRAW);
+    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(surface_.indices.size() * 4),
+                  surface_.indices.data(), GL_STREAM_DRAW);
 }
 
 bool SheetRenderer::bindPaperTexture(const PaperLook& look) {
@@ -341,8 +308,20 @@ void SheetRenderer::buildLines(const SheetSnapshot& snap, const RenderOptions& o
                 if (snap.recentlyBroken[s])
                     pushLine(lineData_, x[snap.springEnds[s][0]], x[snap.springEnds[s][1]], c);
         });
-    // As in clearFor: no keeping the lines of a much larger (or more overlaid) sheet.
+    // No keeping the lines of a much larger (or more overlaid) sheet.
     if (lineData_.capacity() > 2 * lineData_.size()) lineData_.shrink_to_fit();
+}
+
+void SheetRenderer::uploadLines(const SheetSnapshot& snap, const RenderOptions& options) {
+    const LinesKey key{snap.serial, options.overlays, options.pins, options.probabilityRange};
+    if (snap.serial != 0 && key == linesKey_) return;
+    linesKey_ = key;
+    buildLines(snap, options);
+    const GlFunctions& gl = *gl_;
+    gl.BindVertexArray(linesVao_);
+    gl.BindBuffer(GL_ARRAY_BUFFER, linesVbo_);
+    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lineData_.size() * sizeof(float)),
+                  lineData_.data(), GL_STREAM_DRAW);
 }
 
 void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
@@ -364,13 +343,6 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
     // Blend colour only: destination alpha stays 1, because the editor's widget is
     // composited into the window as premultiplied alpha.
     gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-
-    gl.DepthMask(GL_FALSE);
-    gl.UseProgram(backgroundProgram_);
-    setVec3(backgroundProgram_, "uBackground", kBackground);
-    gl.BindVertexArray(emptyVao_);
-    gl.DrawArrays(GL_TRIANGLES, 0, 3);
-    gl.DepthMask(GL_TRUE);
 
     uploadSurface(snap, options);
     const bool drawGround = options.ground && snap.groundEnabled;
@@ -412,7 +384,7 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
     gl.BindVertexArray(surfaceVao_);
     gl.DrawElements(GL_TRIANGLES, surfaceIndexCount_, GL_UNSIGNED_INT, nullptr);
 
-    buildLines(snap, options);
+    uploadLines(snap, options);
     if (!lineBatches_.empty()) {
         // The lines (quads from the geometry shader) are pulled toward the eye so that
         // they win against the surface they lie on.
@@ -425,9 +397,6 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
         gl.Uniform2f(gl.GetUniformLocation(linesProgram_, "uViewport"), width * 0.5f,
                      height * 0.5f);
         gl.BindVertexArray(linesVao_);
-        gl.BindBuffer(GL_ARRAY_BUFFER, linesVbo_);
-        gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lineData_.size() * sizeof(float)),
-                      lineData_.data(), GL_STREAM_DRAW);
         const float scale = std::max(1.0f, height / 720.0f);
         for (const LineBatch& b : lineBatches_) {
             gl.Uniform1f(gl.GetUniformLocation(linesProgram_, "uWidth"), b.halfWidth * scale);
@@ -437,6 +406,18 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
         gl.Disable(GL_POLYGON_OFFSET_FILL);
         gl.Disable(GL_BLEND);
     }
+
+    // The background last, on the far plane, where nothing else was drawn: drawn first,
+    // every pixel of it was shaded and then mostly painted over by the desk and the
+    // paper (a tenth of the frame under software GL).
+    gl.DepthMask(GL_FALSE);
+    gl.DepthFunc(GL_LEQUAL);
+    gl.UseProgram(backgroundProgram_);
+    setVec3(backgroundProgram_, "uBackground", kBackground);
+    gl.BindVertexArray(emptyVao_);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.DepthFunc(GL_LESS);
+    gl.DepthMask(GL_TRUE);
 
     if (options.sphere && snap.sphere.active) {
         const SphereTool& sp = snap.sphere;

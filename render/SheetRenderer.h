@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Camera.h"
+#include "DrawnSurface.h"
 #include "GlFunctions.h"
 #include "RenderOptions.h"
 #include "SheetSnapshot.h"
@@ -35,6 +36,7 @@ class SheetRenderer {
     GLuint program(const char* vert, const char* geom, const char* frag, QString* error);
     void uploadSurface(const SheetSnapshot& snap, const RenderOptions& options);
     void buildLines(const SheetSnapshot& snap, const RenderOptions& options);
+    void uploadLines(const SheetSnapshot& snap, const RenderOptions& options);
     // Binds the look's texture to unit 0, uploading it when the image changed; false
     // (nothing bound) for a plain look.
     bool bindPaperTexture(const PaperLook& look);
@@ -56,17 +58,18 @@ class SheetRenderer {
     qint64 textureKey_ = 0; // QImage::cacheKey of what texture_ holds
     bool surfaceHasUvs_ = false;
     GLsizei surfaceIndexCount_ = 0, sphereIndexCount_ = 0;
-    // What the surface buffers hold, so a repaint with a new camera only does not
-    // subdivide again.
-    struct SurfaceKey {
+    // What the surface and line buffers hold, so a repaint with a new camera only
+    // neither subdivides nor rebuilds the overlay lines again.
+    SurfaceKey surfaceKey_;
+    struct LinesKey {
         std::uint64_t serial = 0;
-        int subdivision = -1;
-        double sigma = -1.0, strainRange = -1.0;
-        bool strain = false;
-        friend bool operator==(const SurfaceKey&, const SurfaceKey&) = default;
-    } surfaceKey_;
-    std::vector<float> vertexData_, lineData_;
-    std::vector<std::uint32_t> indexData_;
+        unsigned overlays = 0;
+        bool pins = false;
+        double probabilityRange = -1.0;
+        friend bool operator==(const LinesKey&, const LinesKey&) = default;
+    } linesKey_;
+    DrawnSurface surface_;
+    std::vector<float> lineData_;
     std::vector<LineBatch> lineBatches_;
 };
 

@@ -1,7 +1,6 @@
 #include "Viewport.h"
 
 #include "Legend.h"
-#include "Subdivision.h"
 #include "ViewportWindow.h"
 
 #include <QElapsedTimer>
@@ -166,13 +165,8 @@ void Viewport::paintGl(unsigned framebuffer) {
     const qreal dpr = window_->devicePixelRatio();
     const int w = static_cast<int>(width() * dpr), h = static_cast<int>(height() * dpr);
     if (renderer_.initialized() && snapshot_) {
-        // The editor draws at most kInteractiveTriangles: a crumpled sheet is drawn one
-        // level coarser rather than multiplying the frame time, and the software GL
-        // driver's memory (which keeps the largest recent frames) stays bounded.
-        RenderOptions drawn = options_;
-        drawn.subdivision =
-            subdivisionWithin(options_.subdivision, snapshot_->tris.size(), kInteractiveTriangles);
-        renderer_.render(*snapshot_, camera_, drawn, w, h);
+        renderer_.render(*snapshot_, camera_, interactiveOptions(options_, snapshot_->tris.size()),
+                         w, h);
     } else {
         QOpenGLFunctions* f = QOpenGLContext::currentContext()->functions();
         f->glClearColor(0.2f, 0.2f, 0.22f, 1.0f);

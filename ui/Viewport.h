@@ -29,10 +29,6 @@ class Viewport : public QWidget {
     explicit Viewport(QWidget* parent = nullptr);
     ~Viewport() override;
 
-    // Most surface triangles the editor draws per frame: a fresh A4 sheet at
-    // subdivision level 3 (57,600) fits; finer meshes are drawn at a coarser level.
-    static constexpr std::size_t kInteractiveTriangles = 65536;
-
     // The surface format every viewport asks for: GL 3.3 core, depth, stencil, 4× MSAA.
     static QSurfaceFormat requiredFormat();
     // What the view draws with: the same, without MSAA where GL is drawn by the CPU.
