@@ -726,10 +726,10 @@
         <translation>Genutzte Kerne</translation>
     </message>
     <message numerus="yes">
-        <source>How many of this computer&apos;s %n cores step the sheet. The sheet moves the same, to the last bit, on any number; more are faster on large sheets.</source>
+        <source>How many of this computer&apos;s %n cores step the sheet. The sheet moves the same, to the last bit, on any number; by default one core is left to draw the view.</source>
         <translation>
-            <numerusform>Wie viele der %n Kerne dieses Computers das Blatt rechnen. Das Blatt bewegt sich bei jeder Zahl gleich, bis aufs letzte Bit; mehr sind bei großen Blättern schneller.</numerusform>
-            <numerusform>Wie viele der %n Kerne dieses Computers das Blatt rechnen. Das Blatt bewegt sich bei jeder Zahl gleich, bis aufs letzte Bit; mehr sind bei großen Blättern schneller.</numerusform>
+            <numerusform>Wie viele der %n Kerne dieses Computers das Blatt rechnen. Das Blatt bewegt sich bei jeder Zahl gleich, bis aufs letzte Bit; standardmäßig bleibt ein Kern frei, der die Ansicht zeichnet.</numerusform>
+            <numerusform>Wie viele der %n Kerne dieses Computers das Blatt rechnen. Das Blatt bewegt sich bei jeder Zahl gleich, bis aufs letzte Bit; standardmäßig bleibt ein Kern frei, der die Ansicht zeichnet.</numerusform>
         </translation>
     </message>
     <message>

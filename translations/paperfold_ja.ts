@@ -721,9 +721,9 @@
         <translation>使用コア数</translation>
     </message>
     <message numerus="yes">
-        <source>How many of this computer&apos;s %n cores step the sheet. The sheet moves the same, to the last bit, on any number; more are faster on large sheets.</source>
+        <source>How many of this computer&apos;s %n cores step the sheet. The sheet moves the same, to the last bit, on any number; by default one core is left to draw the view.</source>
         <translation>
-            <numerusform>このコンピューターの %n 個のコアのうち、用紙の計算に使う数。どの数でも用紙の動きは最後のビットまで同じで、大きな用紙では多いほど速くなります。</numerusform>
+            <numerusform>このコンピューターの %n 個のコアのうち、用紙の計算に使う数。どの数でも用紙の動きは最後のビットまで同じです。既定ではビューの描画用に 1 コアを残します。</numerusform>
         </translation>
     </message>
     <message>

@@ -721,9 +721,9 @@
         <translation>사용 코어 수</translation>
     </message>
     <message numerus="yes">
-        <source>How many of this computer&apos;s %n cores step the sheet. The sheet moves the same, to the last bit, on any number; more are faster on large sheets.</source>
+        <source>How many of this computer&apos;s %n cores step the sheet. The sheet moves the same, to the last bit, on any number; by default one core is left to draw the view.</source>
         <translation>
-            <numerusform>이 컴퓨터의 코어 %n개 중 종이를 계산하는 데 쓰는 수. 어떤 수로도 종이는 마지막 비트까지 똑같이 움직이며, 큰 종이에서는 많을수록 빠릅니다.</numerusform>
+            <numerusform>이 컴퓨터의 코어 %n개 중 종이를 계산하는 데 쓰는 수. 어떤 수로도 종이는 마지막 비트까지 똑같이 움직입니다. 기본값은 보기를 그리는 데 코어 하나를 남겨 둡니다.</numerusform>
         </translation>
     </message>
     <message>

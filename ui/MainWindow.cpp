@@ -59,6 +59,10 @@ const Overlay kOverlayBits[] = {OverlaySpringKinds, OverlayBreakProbability, Ove
 
 } // namespace
 
+int MainWindow::defaultThreads() {
+    return std::max(1, WorkerPool::machineThreads() - 1);
+}
+
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("MainWindow"));
     keepFreedHeapForTheNextFrame();
@@ -136,16 +140,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(input_, &ViewportInput::toolRadiusChanged, panel_, &ParameterPanel::setToolRadius);
     connect(panel_, &ParameterPanel::pushDepthChanged, input_, &ViewportInput::setPushDepth);
     // How many cores step the sheet: the user's choice, kept between sessions; 0 (and
-    // anything unreadable) means all of them, on whatever machine the next session runs.
+    // anything unreadable) means the default, worked out on whatever machine the next
+    // session runs.
     const int all = WorkerPool::machineThreads();
     const int saved = QSettings().value(QLatin1String(kThreadsSetting), 0).toInt();
-    const int threads = saved > 0 ? std::min(saved, all) : all;
+    const int threads = saved > 0 ? std::min(saved, all) : defaultThreads();
     sim_->setThreads(threads);
     solver_->showThreads(threads);
     connect(solver_, &SolverPanel::threadsChanged, this, [this](int n) {
         sim_->setThreads(n);
-        QSettings().setValue(QLatin1String(kThreadsSetting),
-                             n == WorkerPool::machineThreads() ? 0 : n);
+        QSettings().setValue(QLatin1String(kThreadsSetting), n == defaultThreads() ? 0 : n);
     });
     hintShown_ = !QSettings().value(QLatin1String(kHintSetting)).toBool();
     connect(input_, &ViewportInput::acted, this, [this] {

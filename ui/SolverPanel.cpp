@@ -141,8 +141,8 @@ void SolverPanel::retranslate() {
                                    "of g; this keeps free fall exact at the same stability."));
     threadsLabel_->setText(tr("Cores used"));
     threads_->setToolTip(tr("How many of this computer's %n cores step the sheet. The sheet "
-                            "moves the same, to the last bit, on any number; more are faster on "
-                            "large sheets.",
+                            "moves the same, to the last bit, on any number; by default one core "
+                            "is left to draw the view.",
                             nullptr, WorkerPool::machineThreads()));
     stepTimeLabel_->setText(tr("Step time"));
     strainTitle_->setText(tr("Strain"));

@@ -1,7 +1,9 @@
 // Editor endurance benchmark (not a ctest: it runs for minutes). Drives a real
 // MainWindow as a user's mouse would: push strokes one after another, each starting
 // where the `press` sheet shows, for PUSH_SECONDS (default 120) of wall time, then hands off for
-// REST_SECONDS (default 10); PUSH_SHOT=file.png saves the window at the end. Every 10 s it prints
+// REST_SECONDS (default 10); PUSH_SHEET=file.paper opens that sheet first (a large one
+// measures the editor at scale); PUSH_THREADS=n steps on n threads (default: the
+// editor's setting); PUSH_SHOT=file.png saves the window at the end. Every 10 s it prints
 // the sheet's size, the step's cost, frames drawn per second and how much simulated time passed per
 // second of wall time: the editor keeps up with real time while that stays at 1.
 //   xvfb-run -a -s "-screen 0 1280x1024x24" build/tests/editor_push_minutes
@@ -50,10 +52,17 @@ int main(int argc, char** argv) {
 
     MainWindow window;
     if (!bench::showBenchWindow(window, QSize(1280, 720))) return 2;
+    if (const char* sheet = std::getenv("PUSH_SHEET")) {
+        window.showError = [](const QString& message) {
+            std::fprintf(stderr, "%s\n", qPrintable(message));
+        };
+        if (!window.openFile(QString::fromLocal8Bit(sheet))) return 2;
+    }
     QElapsedTimer t;
     t.start();
     const double dt = 1.0 / 240.0; // the editor's step
     SimulationThread* sim = window.simulation();
+    if (const int threads = bench::envInt("PUSH_THREADS", 0); threads > 0) sim->setThreads(threads);
     sim->setPlaying(true);
 
     QSignalSpy frames(window.viewport(), &Viewport::frameDrawn);
