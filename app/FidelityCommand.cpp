@@ -24,8 +24,11 @@ int runFidelity(const QStringList& arguments) {
         {QStringLiteral("material"),
          QStringLiteral("Paper: tissue, office, card (default office)."), QStringLiteral("name"),
          QStringLiteral("office")},
-        {QStringLiteral("substeps"), QStringLiteral("xpbd: sub-steps per step (default 10)."),
+        {QStringLiteral("substeps"), QStringLiteral("xpbd: sub-steps per step (default 40)."),
          QStringLiteral("n")},
+        {QStringLiteral("gravity-outside-filter"),
+         QStringLiteral("The jacobi family: integrate gravity outside the implicit filter (the "
+                        "editor's setting).")},
         {QStringLiteral("csv"), QStringLiteral("Also write the table as CSV to this file."),
          QStringLiteral("file")},
     });
@@ -36,6 +39,7 @@ int runFidelity(const QStringList& arguments) {
     if (!materialPreset(parser.value(QStringLiteral("material")).toStdString(), o.material))
         throw UsageError{QStringLiteral("--material: unknown material '%1' (tissue, office, card)")
                              .arg(parser.value(QStringLiteral("material")))};
+    o.gravityOutsideFilter = parser.isSet(QStringLiteral("gravity-outside-filter"));
     o.substeps =
         static_cast<int>(integerOption(parser, QStringLiteral("substeps"), 1, 1000).value_or(0));
     const QString csvPath = parser.value(QStringLiteral("csv"));
@@ -45,8 +49,11 @@ int runFidelity(const QStringList& arguments) {
     QTextStream out(stdout);
     QString csv = QStringLiteral("check,measure,value,bound,relation,unit,pass\n");
     int failed = 0;
-    out << QStringLiteral("fidelity of %1 with %2 paper%3\n")
-               .arg(QString::fromStdString(o.integrator), QString::fromStdString(o.material.name),
+    out << QStringLiteral("fidelity of %1%2 with %3 paper%4\n")
+               .arg(QString::fromStdString(o.integrator),
+                    o.gravityOutsideFilter ? QStringLiteral(", gravity outside the filter")
+                                           : QString(),
+                    QString::fromStdString(o.material.name),
                     o.quick ? QStringLiteral(" (quick)") : QString());
     out << QStringLiteral("%1 %2 %3 %4  %5\n")
                .arg(QStringLiteral("check"), -30)

@@ -18,6 +18,7 @@ constexpr double kPi = std::numbers::pi;
 void applySolver(SimParams& p, const FidelityOptions& o) {
     p.integrator = o.integrator;
     if (o.substeps > 0) p.substeps = o.substeps;
+    if (o.gravityOutsideFilter) p.gravityOutsideFilter = true;
 }
 
 World configured(World w, const FidelityOptions& o) {

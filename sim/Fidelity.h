@@ -25,6 +25,8 @@ struct FidelityOptions {
     std::string integrator = "xpbd";
     Material material;
     int substeps = 0; // "xpbd": 0 keeps the default
+    // The jacobi family: gravity outside the implicit filter (the editor's setting).
+    bool gravityOutsideFilter = false;
 };
 
 std::vector<FidelityRow> runFidelity(const FidelityOptions& options);
