@@ -22,9 +22,8 @@ SurfaceKey surfaceKeyOf(const SheetSnapshot& snapshot, const RenderOptions& opti
 
 // The subdivided surface of a snapshot as the renderer uploads it: interleaved
 // position 3, normal 3, colour 4 (the strain heat map, or none), texture coordinate 2,
-// and the triangles' indices. No GL, so that it can be built away from the thread that
-// draws (subdividing takes about a sixth of the editor's GUI thread at 1280×720 under
-// software GL).
+// and the triangles' indices. No GL: it is what a frame costs the CPU before GL
+// (ui/README.md measures building it on the simulation thread instead, not kept).
 struct DrawnSurface {
     static constexpr int kFloatsPerVertex = 12;
     SurfaceKey key;

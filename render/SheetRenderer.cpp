@@ -74,7 +74,9 @@ GLuint SheetRenderer::program(const char* vert, const char* geom, const char* fr
 
 bool SheetRenderer::initialize(const GlFunctions& gl, QString* error) {
     gl_ = &gl;
-    surfaceKey_ = SurfaceKey{}; // new buffers hold nothing yet
+    // New buffers hold nothing yet: a paused sheet's next frame (same snapshot) refills them.
+    surfaceKey_ = SurfaceKey{};
+    linesKey_ = LinesKey{};
     QString err;
     surfaceProgram_ = program("surface.vert", nullptr, "surface.frag", &err);
     if (surfaceProgram_) linesProgram_ = program("lines.vert", "lines.geom", "lines.frag", &err);
@@ -384,6 +386,19 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
     gl.BindVertexArray(surfaceVao_);
     gl.DrawElements(GL_TRIANGLES, surfaceIndexCount_, GL_UNSIGNED_INT, nullptr);
 
+    // The background after the desk and the paper, on the far plane, where neither was
+    // drawn: drawn first, every pixel of it was shaded and then mostly painted over (a
+    // tenth of the frame under software GL). Before the lines, which blend over it where
+    // they stick out past the paper.
+    gl.DepthMask(GL_FALSE);
+    gl.DepthFunc(GL_LEQUAL);
+    gl.UseProgram(backgroundProgram_);
+    setVec3(backgroundProgram_, "uBackground", kBackground);
+    gl.BindVertexArray(emptyVao_);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.DepthFunc(GL_LESS);
+    gl.DepthMask(GL_TRUE);
+
     uploadLines(snap, options);
     if (!lineBatches_.empty()) {
         // The lines (quads from the geometry shader) are pulled toward the eye so that
@@ -406,18 +421,6 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
         gl.Disable(GL_POLYGON_OFFSET_FILL);
         gl.Disable(GL_BLEND);
     }
-
-    // The background last, on the far plane, where nothing else was drawn: drawn first,
-    // every pixel of it was shaded and then mostly painted over by the desk and the
-    // paper (a tenth of the frame under software GL).
-    gl.DepthMask(GL_FALSE);
-    gl.DepthFunc(GL_LEQUAL);
-    gl.UseProgram(backgroundProgram_);
-    setVec3(backgroundProgram_, "uBackground", kBackground);
-    gl.BindVertexArray(emptyVao_);
-    gl.DrawArrays(GL_TRIANGLES, 0, 3);
-    gl.DepthFunc(GL_LESS);
-    gl.DepthMask(GL_TRUE);
 
     if (options.sphere && snap.sphere.active) {
         const SphereTool& sp = snap.sphere;

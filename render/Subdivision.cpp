@@ -56,16 +56,19 @@ SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& t
                                   static_cast<std::uint32_t>(t.v[1]),
                                   static_cast<std::uint32_t>(t.v[2])});
 
-    // Shared edges are found by sorting (edge key, corner) pairs rather than through a
-    // hash map: a map allocates a node per edge, millions per second while the editor
-    // plays, and that churn fragmented the heap enough to keep 25 MB after File ▸ New.
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> corners;
-    std::vector<std::uint32_t> midpointOfCorner;
-    std::vector<std::array<std::uint32_t, 3>> next;
-    for (int level = 0; level < levels; ++level) {
-        const std::size_t nTris = mesh.triangles.size();
-        corners.resize(3 * nTris);
-        for (std::size_t t = 0; t < nTris; ++t)
+    // The corners of the triangles (corner e of triangle t, index 3t + e, is the edge
+    // from its vertex e to vertex e + 1) that lie on one edge form a ring (`nextOnEdge`),
+    // and each ring gets one midpoint. The rings of the simulation mesh are found by
+    // sorting (edge key, corner) pairs once; a hash map allocated a node per edge,
+    // millions per second while the editor played, and that churn fragmented the heap
+    // enough to keep 25 MB after File ▸ New. Each later level's rings follow from the
+    // level before (the two halves of an edge, and the three edges inside each
+    // triangle), so no level after the first sorts: sorting was half of the time.
+    const std::size_t firstTris = mesh.triangles.size();
+    std::vector<std::uint32_t> nextOnEdge(3 * firstTris);
+    if (levels > 0) {
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> corners(3 * firstTris);
+        for (std::size_t t = 0; t < firstTris; ++t)
             for (int e = 0; e < 3; ++e) {
                 const std::uint32_t a = mesh.triangles[t][e];
                 const std::uint32_t b = mesh.triangles[t][(e + 1) % 3];
@@ -74,20 +77,93 @@ SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& t
                                       static_cast<std::uint32_t>(3 * t + e)};
             }
         std::sort(corners.begin(), corners.end());
+        std::size_t edges = 0;
+        for (std::size_t i = 0; i < corners.size(); ++edges) {
+            std::size_t end = i;
+            while (end < corners.size() && corners[end].first == corners[i].first) ++end;
+            for (std::size_t k = i; k < end; ++k)
+                nextOnEdge[corners[k].second] = corners[k + 1 < end ? k + 1 : i].second;
+            i = end;
+        }
+        // Each level adds a vertex per edge; an edge becomes two, and each triangle adds
+        // three inside. Reserved at once: grown level by level, the copies and the
+        // fresh pages they touched cost a quarter of the time.
+        std::size_t vertices = mesh.positions.size(), triangles = firstTris;
+        for (int level = 0; level < levels; ++level) {
+            vertices += edges;
+            edges = 2 * edges + 3 * triangles;
+            triangles *= 4;
+        }
+        mesh.positions.reserve(vertices);
+        mesh.normals.reserve(vertices);
+        if (!mesh.scalars.empty()) mesh.scalars.reserve(vertices);
+        if (!mesh.uvs.empty()) mesh.uvs.reserve(vertices);
+    }
+    // Where the halves of a triangle's corner e go among its four children's corners
+    // (child c's corner f is 3c + f): the half at the corner's first vertex, the half
+    // at its second. The children are the paper's DrawTriangle's, orientation kept:
+    // {v0, m01, m20}, {m01, v1, m12}, {m01, m12, m20}, {m12, v2, m20}.
+    constexpr std::uint32_t kHalfAtStart[3] = {0, 4, 10};
+    constexpr std::uint32_t kHalfAtEnd[3] = {3, 9, 2};
+    // The edges inside a triangle, each shared by two of its children.
+    constexpr std::uint32_t kInside[3][2] = {{1, 8}, {5, 6}, {7, 11}};
+    std::vector<std::uint32_t> midpointOfCorner, nextChild;
+    std::vector<std::uint8_t> seen;
+    std::vector<std::array<std::uint32_t, 3>> next;
+    for (int level = 0; level < levels; ++level) {
+        const std::size_t nTris = mesh.triangles.size();
+        const auto corner = [&](std::uint32_t c, int end) {
+            return mesh.triangles[c / 3][(c % 3 + end) % 3];
+        };
         midpointOfCorner.resize(3 * nTris);
-        for (std::size_t i = 0; i < corners.size();) {
-            const std::uint64_t key = corners[i].first;
-            const auto a = static_cast<std::uint32_t>(key >> 32);
-            const auto b = static_cast<std::uint32_t>(key & 0xffffffffu);
+        seen.assign(3 * nTris, 0);
+        const bool deeper = level + 1 < levels;
+        if (deeper) nextChild.resize(12 * nTris);
+        for (std::uint32_t c = 0; c < 3 * nTris; ++c) {
+            if (seen[c]) continue;
+            const std::uint32_t a = corner(c, 0), b = corner(c, 1);
             const auto m = static_cast<std::uint32_t>(mesh.positions.size());
+            // The same expression as its neighbours', whichever end comes first: the
+            // midpoint is symmetric to the last bit.
             mesh.positions.push_back(hermiteMidpoint(mesh.positions[a], mesh.positions[b],
                                                      mesh.normals[a], mesh.normals[b], sigma));
             mesh.normals.push_back(midpointNormal(mesh.normals[a], mesh.normals[b]));
             if (!mesh.scalars.empty())
                 mesh.scalars.push_back(0.5f * (mesh.scalars[a] + mesh.scalars[b]));
             if (!mesh.uvs.empty()) mesh.uvs.push_back(0.5 * (mesh.uvs[a] + mesh.uvs[b]));
-            for (; i < corners.size() && corners[i].first == key; ++i)
-                midpointOfCorner[corners[i].second] = m;
+            // Around the ring: every corner on this edge takes the midpoint, and the
+            // halves at vertex a (and those at b) of all of them form the next level's
+            // rings.
+            std::uint32_t firstAtA = 0, firstAtB = 0, lastAtA = 0, lastAtB = 0;
+            bool first = true;
+            std::uint32_t r = c;
+            do {
+                seen[r] = 1;
+                midpointOfCorner[r] = m;
+                if (deeper) {
+                    const std::uint32_t t = r / 3, e = r % 3;
+                    const bool startsAtA = corner(r, 0) == a;
+                    const std::uint32_t atA =
+                        12 * t + (startsAtA ? kHalfAtStart[e] : kHalfAtEnd[e]);
+                    const std::uint32_t atB =
+                        12 * t + (startsAtA ? kHalfAtEnd[e] : kHalfAtStart[e]);
+                    if (first) {
+                        firstAtA = atA;
+                        firstAtB = atB;
+                        first = false;
+                    } else {
+                        nextChild[lastAtA] = atA;
+                        nextChild[lastAtB] = atB;
+                    }
+                    lastAtA = atA;
+                    lastAtB = atB;
+                }
+                r = nextOnEdge[r];
+            } while (r != c);
+            if (deeper) {
+                nextChild[lastAtA] = firstAtA;
+                nextChild[lastAtB] = firstAtB;
+            }
         }
         next.clear();
         next.reserve(4 * nTris);
@@ -96,13 +172,18 @@ SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& t
             const std::uint32_t mij = midpointOfCorner[3 * t];
             const std::uint32_t mjk = midpointOfCorner[3 * t + 1];
             const std::uint32_t mki = midpointOfCorner[3 * t + 2];
-            // The four children of the paper's DrawTriangle, orientation kept.
             next.push_back({tri[0], mij, mki});
             next.push_back({mij, tri[1], mjk});
             next.push_back({mij, mjk, mki});
             next.push_back({mjk, tri[2], mki});
+            if (deeper)
+                for (const auto& pair : kInside) {
+                    nextChild[12 * t + pair[0]] = static_cast<std::uint32_t>(12 * t + pair[1]);
+                    nextChild[12 * t + pair[1]] = static_cast<std::uint32_t>(12 * t + pair[0]);
+                }
         }
         mesh.triangles.swap(next);
+        if (deeper) nextOnEdge.swap(nextChild);
     }
     return mesh;
 }

@@ -537,7 +537,7 @@ class TestEditor : public QObject {
         QTRY_COMPARE(solver->gravityBox()->isChecked(), true);
     }
 
-    // The Solver dock chooses how many cores step the sheet: all of them by default, the
+    // The Solver dock chooses how many cores step the sheet: all but one by default, the
     // choice reaches the simulation (which reports it), is not an edit of the sheet (no
     // undo step), and is kept for the next session.
     void solverDockChoosesTheCores() {

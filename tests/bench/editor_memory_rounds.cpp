@@ -64,7 +64,7 @@ SimulationStatus settle(MainWindow& w, int ms) {
     while (spy.count() < 1 && t.elapsed() < 5000) QTest::qWait(5);
     // Measure what the viewport holds once it has drawn the new sheet. (Its surface
     // buffers stay about 2 MB whatever the sheet: the editor draws at most
-    // Viewport::kInteractiveTriangles, choosing a coarser level for a finer mesh.)
+    // kInteractiveTriangles (render/DrawnSurface.h), choosing a coarser level for a finer mesh.)
     QSignalSpy drawn(w.viewport(), &Viewport::frameDrawn);
     t.restart();
     while (drawn.count() < 2 && t.elapsed() < 5000) QTest::qWait(5);
