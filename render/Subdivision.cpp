@@ -107,20 +107,27 @@ SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& t
     constexpr std::uint32_t kHalfAtEnd[3] = {3, 9, 2};
     // The edges inside a triangle, each shared by two of its children.
     constexpr std::uint32_t kInside[3][2] = {{1, 8}, {5, 6}, {7, 11}};
+    constexpr std::uint32_t kUnmade = 0xffffffffu;
     std::vector<std::uint32_t> midpointOfCorner, nextChild;
-    std::vector<std::uint8_t> seen;
     std::vector<std::array<std::uint32_t, 3>> next;
     for (int level = 0; level < levels; ++level) {
         const std::size_t nTris = mesh.triangles.size();
         const auto corner = [&](std::uint32_t c, int end) {
             return mesh.triangles[c / 3][(c % 3 + end) % 3];
         };
-        midpointOfCorner.resize(3 * nTris);
-        seen.assign(3 * nTris, 0);
+        // The child corners that are corner c's halves at vertex v and at its other end.
+        const auto halves = [&](std::uint32_t c, std::uint32_t v) {
+            const std::uint32_t t = c / 3, e = c % 3;
+            return corner(c, 0) == v ? std::array<std::uint32_t, 2>{12 * t + kHalfAtStart[e],
+                                                                    12 * t + kHalfAtEnd[e]}
+                                     : std::array<std::uint32_t, 2>{12 * t + kHalfAtEnd[e],
+                                                                    12 * t + kHalfAtStart[e]};
+        };
+        midpointOfCorner.assign(3 * nTris, kUnmade);
         const bool deeper = level + 1 < levels;
         if (deeper) nextChild.resize(12 * nTris);
         for (std::uint32_t c = 0; c < 3 * nTris; ++c) {
-            if (seen[c]) continue;
+            if (midpointOfCorner[c] != kUnmade) continue;
             const std::uint32_t a = corner(c, 0), b = corner(c, 1);
             const auto m = static_cast<std::uint32_t>(mesh.positions.size());
             // The same expression as its neighbours', whichever end comes first: the
@@ -133,37 +140,17 @@ SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& t
             if (!mesh.uvs.empty()) mesh.uvs.push_back(0.5 * (mesh.uvs[a] + mesh.uvs[b]));
             // Around the ring: every corner on this edge takes the midpoint, and the
             // halves at vertex a (and those at b) of all of them form the next level's
-            // rings.
-            std::uint32_t firstAtA = 0, firstAtB = 0, lastAtA = 0, lastAtB = 0;
-            bool first = true;
+            // rings, in the same order.
             std::uint32_t r = c;
             do {
-                seen[r] = 1;
                 midpointOfCorner[r] = m;
                 if (deeper) {
-                    const std::uint32_t t = r / 3, e = r % 3;
-                    const bool startsAtA = corner(r, 0) == a;
-                    const std::uint32_t atA =
-                        12 * t + (startsAtA ? kHalfAtStart[e] : kHalfAtEnd[e]);
-                    const std::uint32_t atB =
-                        12 * t + (startsAtA ? kHalfAtEnd[e] : kHalfAtStart[e]);
-                    if (first) {
-                        firstAtA = atA;
-                        firstAtB = atB;
-                        first = false;
-                    } else {
-                        nextChild[lastAtA] = atA;
-                        nextChild[lastAtB] = atB;
-                    }
-                    lastAtA = atA;
-                    lastAtB = atB;
+                    const auto here = halves(r, a), after = halves(nextOnEdge[r], a);
+                    nextChild[here[0]] = after[0];
+                    nextChild[here[1]] = after[1];
                 }
                 r = nextOnEdge[r];
             } while (r != c);
-            if (deeper) {
-                nextChild[lastAtA] = firstAtA;
-                nextChild[lastAtB] = firstAtB;
-            }
         }
         next.clear();
         next.reserve(4 * nTris);
