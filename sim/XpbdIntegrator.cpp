@@ -535,15 +535,39 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt) {
         projection_.compute(a);
         if (projection_.info() != Eigen::Success) return;
         const Eigen::VectorXd lambda = projection_.solve(c);
-        for (std::size_t e = 0; e < active_.size(); ++e) {
-            const StretchConstraint& k = stretch_[active_[e]];
-            const Vec3 move = dir_[e] * lambda[static_cast<Index>(e)];
-            V.x[k.a] -= w_[k.a] * move;
-            V.x[k.b] += w_[k.b] * move;
-            V.v[k.a] -= w_[k.a] * move / dt;
-            V.v[k.b] += w_[k.b] * move / dt;
+        // The Newton step, shortened until it leaves the worst stretch smaller: on the
+        // slivers breaks insert along a fold, J W Jᵀ is nearly singular and the full
+        // step overshot (a second fold's stretch went 69 %, 229 %, 366 % in three
+        // iterations). No shorter step helping ends the projection where it is.
+        projectedFrom_ = V.x;
+        double fraction = 1.0;
+        for (int halving = 0;; ++halving) {
+            for (std::size_t e = 0; e < active_.size(); ++e) {
+                const StretchConstraint& k = stretch_[active_[e]];
+                const Vec3 move = dir_[e] * (fraction * lambda[static_cast<Index>(e)]);
+                V.x[k.a] -= w_[k.a] * move;
+                V.x[k.b] += w_[k.b] * move;
+            }
+            if (worstProjectedStretch(sheet) < worst) break;
+            V.x = projectedFrom_;
+            if (halving == kProjectionHalvings) return;
+            fraction *= 0.5;
         }
+        for (Index i = 0; i < nv; ++i)
+            if (w_[i] != 0.0) V.v[i] += (V.x[i] - projectedFrom_[i]) / dt;
     }
+}
+
+// The largest stretch among the edges the projection holds.
+double XpbdIntegrator::worstProjectedStretch(const Sheet& sheet) const {
+    const auto& V = sheet.verts;
+    double worst = 0.0;
+    for (const StretchConstraint& k : stretch_) {
+        if (!(k.maxPull == std::numeric_limits<double>::infinity()) || w_[k.a] + w_[k.b] == 0.0)
+            continue;
+        worst = std::max(worst, (V.x[k.a] - V.x[k.b]).norm() / k.rest - 1.0);
+    }
+    return worst;
 }
 
 bool XpbdIntegrator::mustWake(const Sheet& sheet) const {

@@ -33,6 +33,8 @@ inline constexpr int kSubstepsPerBendingSolve = 4;
 // sub-steps may leave before it runs, and its compliance relative to the constraints'
 // inverse masses (a triangle mesh held by pins has more edges than free directions).
 inline constexpr int kProjectionIterations = 4;
+// Times a Newton step of the projection may be halved before the projection gives up.
+inline constexpr int kProjectionHalvings = 4;
 inline constexpr double kProjectedStretch = 3e-3;
 inline constexpr double kProjectionCompliance = 1e-3;
 // An edge shorter than its rest length by more than this has buckled (the sub-steps
@@ -95,6 +97,7 @@ class XpbdIntegrator final : public Integrator {
     void bendImplicitly(Sheet& sheet, const Vec3& g, double h);
     void yieldPlastically(Sheet& sheet, const Material& m);
     void projectStretch(Sheet& sheet, double dt);
+    double worstProjectedStretch(const Sheet& sheet) const;
     bool shouldSleep(const Sheet& sheet) const;
     bool mustWake(const Sheet& sheet) const;
 
@@ -139,6 +142,7 @@ class XpbdIntegrator final : public Integrator {
     // meet at each vertex.
     std::vector<std::size_t> active_;
     std::vector<Vec3> dir_;
+    std::vector<Vec3> projectedFrom_; // positions before the Newton step being tried
     std::vector<Index> incidentStart_;
     std::vector<std::pair<Index, double>> incident_;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> projection_;

@@ -10,6 +10,7 @@
 
 #include <QTest>
 #include <numbers>
+#include <string>
 
 using namespace pf;
 
@@ -17,10 +18,12 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The editor's sheet (office A4 on the desk, the editor's settings), let settle 0.5 s.
-EditSession editorSession(bool damage = true) {
+// The editor's sheet (office A4 on the desk, the editor's settings, or another
+// integrator), let settle 0.5 s.
+EditSession editorSession(bool damage = true, const std::string& integrator = {}) {
     World w = makeEditorScene("press", SceneOptions{}, 0.03);
     w.params.breaking = w.params.hinges = damage;
+    if (!integrator.empty()) w.params.integrator = integrator;
     EditSession s(std::move(w));
     [&] { QCOMPARE(s.advance(120), StepStatus::Ok); }();
     return s;
@@ -170,11 +173,19 @@ class TestFoldTool : public QObject {
         for (const Vec3& x : s.world().sheet.verts.x) QVERIFY(x.y() < 0.03); // back down
     }
 
+    void aSecondFoldAcrossTheFirstTurnsInThePapersPlane_data() {
+        QTest::addColumn<QString>("integrator");
+        QTest::newRow("jacobi") << QStringLiteral("jacobi");
+        // xpbd's projection overshot on the slivers the first fold's breaks left: 515 %.
+        QTest::newRow("xpbd") << QStringLiteral("xpbd");
+    }
+
     void aSecondFoldAcrossTheFirstTurnsInThePapersPlane() {
         // Where the paper lies folded, its layers face opposite ways: the fold must still
         // turn about a line in the paper's plane, or the flap is swung through the rest
         // (the mean of the normals did that: springs stretched to 976 %).
-        EditSession s = editorSession();
+        QFETCH(QString, integrator);
+        EditSession s = editorSession(true, integrator.toStdString());
         QCOMPARE(s.fold({Vec3(-0.2, 0, 0.12), Vec3(0.2, 0, -0.02), kPi, false}), FoldRefusal::None);
         runUntilLetGo(s);
         advanceSeconds(s, 2.0);
