@@ -115,27 +115,47 @@ class TestFoldTool : public QObject {
         QVERIFY(std::abs(held - 95.0) < 15.0);
     }
 
+    void theFoldGoesTowardTheViewerOrAway_data() {
+        QTest::addColumn<QString>("integrator");
+        QTest::newRow("jacobi") << QStringLiteral("jacobi");
+        QTest::newRow("xpbd") << QStringLiteral("xpbd");
+    }
+
     void theFoldGoesTowardTheViewerOrAway() {
         // In the air (no desk under it), seen from above, a mountain fold carries the flap
         // below the paper and a valley fold above it; seen from below, the other way.
+        // Heights are taken from the rest of the paper: nothing holds it in the air, so
+        // the carried flap swings it the other way, its mean by 7 cm in 0.75 s for paper
+        // that does not stretch (xpbd), by 6 mm for the soft springs (jacobi).
+        QFETCH(QString, integrator);
         const std::pair<bool, bool> kinds[] = {
             {false, false}, {true, false}, {true, true}, {false, true}};
         for (auto [mountain, fromBelow] : kinds) {
             World w = makeEditorScene("press", SceneOptions{}, 0.03);
             w.groundEnabled = false;
             w.params.gravity = 0.0;
+            w.params.integrator = integrator.toStdString();
             EditSession s(std::move(w));
             FoldRequest request = acrossTheMiddle(kPi, mountain);
             if (fromBelow) request.viewer = -Vec3::UnitY();
             QCOMPARE(s.fold(request), FoldRefusal::None);
+            QCOMPARE(s.world().script.pins.size(), std::size_t(1)); // the flap, carried
+            const std::vector<Index> flap = s.world().script.pins.front().vertices;
             advanceSeconds(s, 0.75);
+            const auto& x = s.world().sheet.verts.x;
+            std::vector<bool> inFlap(x.size(), false);
+            for (Index i : flap) inFlap[static_cast<std::size_t>(i)] = true;
+            double rest = 0.0;
+            for (std::size_t i = 0; i < x.size(); ++i)
+                if (!inFlap[i]) rest += x[i].y() / double(x.size() - flap.size());
             double lowest = 0.0, highest = 0.0;
-            for (const Vec3& x : s.world().sheet.verts.x) {
-                lowest = std::min(lowest, x.y());
-                highest = std::max(highest, x.y());
+            for (Index i : flap) {
+                lowest = std::min(lowest, x[static_cast<std::size_t>(i)].y() - rest);
+                highest = std::max(highest, x[static_cast<std::size_t>(i)].y() - rest);
             }
-            qInfo("%s%s: flap between %.3f and %.3f m", mountain ? "mountain" : "valley",
-                  fromBelow ? " seen from below" : "", lowest, highest);
+            qInfo("%s%s: flap between %.3f and %.3f m of the rest's mean height %.3f m",
+                  mountain ? "mountain" : "valley", fromBelow ? " seen from below" : "", lowest,
+                  highest, rest);
             if (mountain != fromBelow) {
                 QVERIFY(lowest < -0.1);
                 QVERIFY(highest < 0.01);
