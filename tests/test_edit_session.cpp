@@ -551,6 +551,32 @@ class TestEditSession : public QObject {
         QVERIFY2(V.x.back().y() < before - 1e-3, "the unpinned sheet did not fall");
     }
 
+    // A script that lets its pins go wakes a sleeping sheet, as the user's unpin does (the
+    // Fold tool lets go this way: a sheet asleep under it stayed as the fold had left it).
+    void aScriptLettingGoWakesASleepingSheet() {
+        SceneOptions coarse;
+        coarse.resolution = 9;
+        World w = *makeScene("press", coarse);
+        w.params.integrator = "xpbd";
+        PinGroup hold;
+        hold.vertices = {0};
+        hold.release = 4.0;
+        w.sheet.verts.pinned[0] = 1;
+        w.script.pins.push_back(hold);
+        EditSession session(w);
+        const auto& V = session.world().sheet.verts;
+        while (!session.simulation().asleep() && session.world().time < 3.5) session.advance(10);
+        QVERIFY2(session.simulation().asleep(), "the sheet on the desk never came to rest");
+        session.simulation().world().groundEnabled = false;
+        const double before = V.x.back().y();
+        session.advance(24);
+        QCOMPARE(V.x.back().y(), before); // still asleep: nothing woke it
+        while (session.world().time < hold.release) session.advance(1);
+        QVERIFY(!V.pinned[0]);
+        session.advance(24);
+        QVERIFY2(V.x.back().y() < before - 1e-3, "the let-go sheet did not fall");
+    }
+
     // A script's pinned vertex that the user freed and then grabs follows the hand, not
     // the script.
     void aGrabbedScriptVertexFollowsTheHand() {
