@@ -33,7 +33,9 @@ inline constexpr int kSubstepsPerBendingSolve = 4;
 // sub-steps may leave before it runs, and its compliance relative to the constraints'
 // inverse masses (a triangle mesh held by pins has more edges than free directions).
 inline constexpr int kProjectionIterations = 4;
-// Times a Newton step of the projection may be halved before the projection gives up.
+// A Newton step of the projection that multiplies the worst stretch by more than this
+// diverges: it is halved, up to kProjectionHalvings times before the projection stops.
+inline constexpr double kProjectionDivergence = 2.0;
 inline constexpr int kProjectionHalvings = 4;
 inline constexpr double kProjectedStretch = 3e-3;
 inline constexpr double kProjectionCompliance = 1e-3;
@@ -98,7 +100,7 @@ class XpbdIntegrator final : public Integrator {
     void yieldPlastically(Sheet& sheet, const Material& m);
     void projectStretch(Sheet& sheet, double dt);
     double worstProjectedStretch(const Sheet& sheet) const;
-    bool shouldSleep(const Sheet& sheet) const;
+    bool shouldSleep(const Sheet& sheet, double dt) const;
     bool mustWake(const Sheet& sheet) const;
 
     ContactScene contacts_;
@@ -135,6 +137,7 @@ class XpbdIntegrator final : public Integrator {
     bool factored_ = false;
     std::vector<Vec3> rhs_, sol_;
     std::vector<Vec3> xPrev_;
+    std::vector<Vec3> stepStart_;       // positions before this step's sub-steps
     std::vector<double> w_;             // inverse masses, 0 for pinned vertices
     std::vector<std::uint8_t> touched_; // touched by the tool in this sub-step
     std::vector<Index> toolTriangles_;  // triangles the tool may reach in this step
@@ -142,7 +145,8 @@ class XpbdIntegrator final : public Integrator {
     // meet at each vertex.
     std::vector<std::size_t> active_;
     std::vector<Vec3> dir_;
-    std::vector<Vec3> projectedFrom_; // positions before the Newton step being tried
+    // Positions and velocities before the Newton step being tried.
+    std::vector<Vec3> projectedFrom_, velocityFrom_;
     std::vector<Index> incidentStart_;
     std::vector<std::pair<Index, double>> incident_;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> projection_;
