@@ -535,7 +535,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt) {
         projection_.compute(a);
         if (projection_.info() != Eigen::Success) return;
         const Eigen::VectorXd lambda = projection_.solve(c);
-        // The Newton step, halved while it at least doubles the worst stretch: on the
+        // The Newton step, halved while it more than doubles the worst stretch: on the
         // slivers breaks insert along a fold, J W Jᵀ is nearly singular and the full
         // step diverged (a second fold's stretch went 69 %, 229 %, 366 % in three
         // iterations). If no shorter step holds, the projection ends where it is. A
@@ -553,7 +553,8 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt) {
                 V.v[k.a] -= w_[k.a] * move / dt;
                 V.v[k.b] += w_[k.b] * move / dt;
             }
-            if (!(worstProjectedStretch(sheet) > kProjectionDivergence * worst)) break;
+            // (A NaN from an overflowing solve fails the test and is undone too.)
+            if (worstProjectedStretch(sheet) <= kProjectionDivergence * worst) break;
             V.x = projectedFrom_;
             V.v = velocityFrom_;
             if (halving == kProjectionHalvings) return;

@@ -17,8 +17,9 @@ inline constexpr double kPoisson = 1.0 / 3.0;
 // Bending left across the edges of a crease (around a vertex a break inserted), as a
 // share of the sheet's: a crease is a line where the paper has given way.
 inline constexpr double kCreaseBendingShare = 0.02;
-// A sheet whose every free vertex stays slower than 0.5 mm/s this many steps in a row,
-// with no tool moving near it and no pinned vertex moving, falls asleep.
+// A sheet whose every free vertex moves no more than 0.5 mm/s × dt over each of this
+// many steps in a row, with no tool moving near it and no pinned vertex moving, falls
+// asleep.
 inline constexpr int kStepsBeforeSleep = 30;
 // How far below its surface the tool grips the paper it presses onto the desk (m).
 inline constexpr double kToolReach = 0.001;
