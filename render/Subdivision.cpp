@@ -142,12 +142,14 @@ SurfaceMesh subdivide(const std::vector<Vec3>& x, const std::vector<Triangle>& t
             // halves at vertex a (and those at b) of all of them form the next level's
             // rings, in the same order.
             std::uint32_t r = c;
+            auto here = halves(c, a);
             do {
                 midpointOfCorner[r] = m;
                 if (deeper) {
-                    const auto here = halves(r, a), after = halves(nextOnEdge[r], a);
+                    const auto after = halves(nextOnEdge[r], a);
                     nextChild[here[0]] = after[0];
                     nextChild[here[1]] = after[1];
+                    here = after;
                 }
                 r = nextOnEdge[r];
             } while (r != c);

@@ -476,8 +476,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt) {
         active_.clear();
         for (std::size_t q = 0; q < stretch_.size(); ++q) {
             const StretchConstraint& k = stretch_[q];
-            if (!(k.maxPull == std::numeric_limits<double>::infinity()) || w_[k.a] + w_[k.b] == 0.0)
-                continue;
+            if (!projects(k)) continue;
             const double len = (V.x[k.a] - V.x[k.b]).norm();
             if (len > k.rest * (1.0 - kBuckledStrain)) active_.push_back(q);
         }
@@ -567,11 +566,8 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt) {
 double XpbdIntegrator::worstProjectedStretch(const Sheet& sheet) const {
     const auto& V = sheet.verts;
     double worst = 0.0;
-    for (const StretchConstraint& k : stretch_) {
-        if (!(k.maxPull == std::numeric_limits<double>::infinity()) || w_[k.a] + w_[k.b] == 0.0)
-            continue;
-        worst = std::max(worst, (V.x[k.a] - V.x[k.b]).norm() / k.rest - 1.0);
-    }
+    for (const StretchConstraint& k : stretch_)
+        if (projects(k)) worst = std::max(worst, (V.x[k.a] - V.x[k.b]).norm() / k.rest - 1.0);
     return worst;
 }
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace pf {
@@ -126,6 +127,10 @@ class XpbdIntegrator final : public Integrator {
         double wa, wb, rest, gain, lowest, highest;
     };
     std::vector<StepConstraint> stretchStep_;
+    // The projection holds the structural edges (unlimited pull) not pinned at both ends.
+    bool projects(const StretchConstraint& k) const {
+        return k.maxPull == std::numeric_limits<double>::infinity() && w_[k.a] + w_[k.b] != 0.0;
+    }
     struct Tether {
         Index vertex, pin;
         double length; // material distance: the paper between them, unstretched
