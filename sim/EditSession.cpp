@@ -246,13 +246,23 @@ std::optional<EditSession::StrokeEnd> EditSession::pin(const Vec3& point, double
     record(std::move(c));
     if (busy()) return std::nullopt;
     const auto& V = sim_.world().sheet.verts;
-    Index nearest = kNone;
-    double best = radius * radius;
-    for (Index i = 0; i < V.size(); ++i)
-        if (const double d = (V.x[i] - point).squaredNorm(); d <= best) {
+    // A click within reach of a pin frees it, even where free paper lies nearer the
+    // click: paper that hangs from a pin falls steeply away round it (xpbd's does not
+    // stretch), and the nearest vertex to a second click on the pin was free paper.
+    Index nearest = kNone, nearestPinned = kNone;
+    double best = radius * radius, bestPinned = radius * radius;
+    for (Index i = 0; i < V.size(); ++i) {
+        const double d = (V.x[i] - point).squaredNorm();
+        if (d <= best) {
             best = d;
             nearest = i;
         }
+        if (V.pinned[i] && d <= bestPinned) {
+            bestPinned = d;
+            nearestPinned = i;
+        }
+    }
+    if (nearestPinned != kNone) nearest = nearestPinned;
     if (nearest == kNone) return std::nullopt;
     const bool to = !V.pinned[nearest];
     std::vector<Index> changed;

@@ -19,7 +19,7 @@ struct SimParams {
 
     double dt = 1.0 / 240.0;
     int iterations = 1; // Jacobi sweeps after the initial estimate (Eq. 6)
-    std::string integrator = "jacobi";
+    std::string integrator = "xpbd";
     // The paper the sheet is made of; used by "xpbd" (the other integrators keep the
     // per-kind stiffness below, the paper's springs).
     Material material;

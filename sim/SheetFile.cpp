@@ -455,8 +455,13 @@ Sheet sheetFromCbor(const QCborMap& m) {
     }
     const std::string problem = validateSheet(s);
     if (!problem.empty()) fail(QStringLiteral("sheet: %1").arg(QString::fromStdString(problem)));
-    // The chord, as every integrator read it when files held no peaks.
-    if (!hasPeaks) recordCurrentContraction(s, SimParams{});
+    // The chord, as every integrator read it when files held no peaks (jacobi's
+    // reading; the default xpbd reads the arc).
+    if (!hasPeaks) {
+        SimParams chord;
+        chord.integrator = "jacobi";
+        recordCurrentContraction(s, chord);
+    }
     return s;
 }
 

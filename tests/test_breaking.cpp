@@ -147,6 +147,7 @@ class TestBreaking : public QObject {
         Sheet s = test::makeJitteredSheet(8, 8, 3);
         for (Vec3& x : s.verts.x) x.x() *= 0.9; // every edge along x now contracted
         SimParams p;
+        p.integrator = "jacobi"; // the chord's contraction, as the paper reads it
         p.phi = 0.0;
         p.breakReferenceContraction = 1e9; // draws, but practically never breaks
         Rng rng(1);

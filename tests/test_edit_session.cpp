@@ -2,6 +2,7 @@
 // through §4.2 recovery, driven headless exactly as the editor's simulation thread does.
 #include "Breaking.h"
 #include "EditSession.h"
+#include "JacobiScene.h"
 #include "Normals.h"
 #include "RecordingFile.h"
 #include "SceneScript.h"
@@ -196,7 +197,7 @@ class TestEditSession : public QObject {
     }
 
     void undoOfAStrokeThatBrokeTheSheetGivesBackItsLook() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::jacobiScene("press"));
         QCOMPARE(session.advance(24), StepStatus::Ok);
         const Sheet before = session.world().sheet;
         const auto end = pushStroke(session, 0.0, 0.6);
@@ -221,7 +222,7 @@ class TestEditSession : public QObject {
     void redoTakesBackWhatTheSheetBrokeSinceTheUndo() {
         // The editor plays on between an undo and a redo, and the sheet may break a
         // little as it settles: the redo takes that back and gives the stroke's sheet.
-        EditSession session(*makeScene("press"));
+        EditSession session(test::jacobiScene("press"));
         const auto end = pushStroke(session, 0.0, 0.6);
         QVERIFY(end.has_value() && end->events > 0);
         const Topology after = topology(session.world().sheet);
@@ -241,7 +242,7 @@ class TestEditSession : public QObject {
     void redoIsRefusedOnAMeshAnotherStrokeChanged() {
         // Two strokes undone, the second redone first: its edge ids belong to the mesh
         // the first left, so it is refused and nothing breaks.
-        EditSession session(*makeScene("press"));
+        EditSession session(test::jacobiScene("press"));
         const auto first = pushStroke(session, 0.0, 0.6);
         session.advance(60);
         const auto second = pushStroke(session, 0.6, 1.0);
@@ -255,7 +256,7 @@ class TestEditSession : public QObject {
     }
 
     void undoAndRedoOfStrokesInAnyOrderKeepAValidMesh() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::jacobiScene("press"));
         const Topology before = topology(session.world().sheet);
         std::vector<EditSession::StrokeEnd> strokes;
         std::vector<Topology> after;
@@ -296,7 +297,7 @@ class TestEditSession : public QObject {
     // The overlay's Eq. 10 is the one the step drew, not worked out again per frame; an
     // edit between steps (new φ, undo) brings it up to date once.
     void theSnapshotsBreakProbabilitiesAreTheStepsAndFollowEdits() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::jacobiScene("press"));
         pushStroke(session, 0.0, 0.6);
         auto fresh = [&] {
             BreakScratch scratch;
@@ -356,7 +357,7 @@ class TestEditSession : public QObject {
     // Settle: a crumpled, moving sheet steps on without damage until it rests (or 3 s
     // pass), then stands exactly still until the next edit; undo and redo like a stroke.
     void settleStopsDamageAndKeepsTheSheetAsItIs() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::jacobiScene("press"));
         pushStroke(session, 0.0, 0.6);
         session.advance(6);
         const Index events = session.world().sheet.events.size();
@@ -712,7 +713,7 @@ class TestEditSession : public QObject {
     }
 
     void resetIsAnUndoStepThatGivesTheSheetBack() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::jacobiScene("press"));
         const World fresh = session.world();
         const auto crumple = pushStroke(session, 0.0, 0.6);
         QVERIFY(crumple && crumple->events > 0);

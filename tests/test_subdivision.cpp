@@ -1,4 +1,5 @@
 // Paper §4.3: Hermite midpoints, σ, and a crack-free subdivided surface.
+#include "JacobiScene.h"
 #include "Normals.h"
 #include "Rng.h"
 #include "Scenes.h"
@@ -61,7 +62,7 @@ class TestSubdivision : public QObject {
         // Evaluate every edge's midpoint from each of its two triangles, in that
         // triangle's own vertex order, and compare: the paper's per-triangle recursion
         // would then produce no cracks.
-        Simulation sim(*makeScene("press"));
+        Simulation sim(test::jacobiScene("press"));
         for (int k = 0; k < 300; ++k) sim.step();
         const Sheet& s = sim.world().sheet;
         std::vector<Vec3> n;
@@ -87,7 +88,7 @@ class TestSubdivision : public QObject {
     }
     void subdividedSurfaceIsAClosedUpDisc() {
         QFETCH(int, level);
-        Simulation sim(*makeScene("press"));
+        Simulation sim(test::jacobiScene("press"));
         for (int k = 0; k < 200; ++k) sim.step();
         const Sheet& s = sim.world().sheet;
         const SurfaceMesh m = subdivideSheet(s, 1.0, level);
@@ -110,7 +111,7 @@ class TestSubdivision : public QObject {
     // the material midpoint's, the subdivided triangles tile the unit square in uv
     // exactly once, none flipped, also across the vertices that breaks inserted.
     void textureCoordinatesAreTheMaterialCoordinates() {
-        Simulation sim(*makeScene("press"));
+        Simulation sim(test::jacobiScene("press"));
         for (int k = 0; k < 200; ++k) sim.step();
         const Sheet& s = sim.world().sheet;
         QVERIFY(!s.events.empty()); // broken: inserted vertices on the way
@@ -138,7 +139,7 @@ class TestSubdivision : public QObject {
     }
 
     void sigmaChangesTheSurface() {
-        Simulation sim(*makeScene("press"));
+        Simulation sim(test::jacobiScene("press"));
         for (int k = 0; k < 300; ++k) sim.step();
         const SurfaceMesh flat = subdivideSheet(sim.world().sheet, 0.0, 2);
         const SurfaceMesh round = subdivideSheet(sim.world().sheet, 1.0, 2);
