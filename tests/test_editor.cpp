@@ -606,6 +606,29 @@ class TestEditor : public QObject {
         QVERIFY(std::abs(totalMass(worldOf(*window)->sheet) / office - 1.0) < 1e-9);
     }
 
+    // What the chosen integrator does not read cannot be edited: sweeps and gravity
+    // outside the filter are the Jacobi iteration's, the paper preset is xpbd's. An undo
+    // of the choice gives the controls back as they were.
+    void theSolverDockOffersWhatTheIntegratorUses() {
+        SolverPanel* solver = window->solverPanel();
+        QCOMPARE(solver->integratorBox()->currentText(), QStringLiteral("xpbd"));
+        QVERIFY(solver->materialBox()->isEnabled());
+        QVERIFY(!solver->iterationsBox()->isEnabled());
+        QVERIFY(!solver->gravityBox()->isEnabled());
+        solver->integratorBox()->setCurrentText(QStringLiteral("jacobi"));
+        QVERIFY(!solver->materialBox()->isEnabled());
+        QVERIFY(solver->iterationsBox()->isEnabled());
+        QVERIFY(solver->gravityBox()->isEnabled());
+        solver->integratorBox()->setCurrentText(QStringLiteral("backward-euler"));
+        QVERIFY(!solver->materialBox()->isEnabled());
+        QVERIFY(!solver->iterationsBox()->isEnabled());
+        window->undoStack()->undo();
+        window->undoStack()->undo();
+        QCOMPARE(solver->integratorBox()->currentText(), QStringLiteral("xpbd"));
+        QVERIFY(solver->materialBox()->isEnabled());
+        QVERIFY(!solver->iterationsBox()->isEnabled());
+    }
+
     void openLatestChartShowsTheNewestBenchChart() {
         QTemporaryDir dir;
         QImage older(200, 100, QImage::Format_RGB32), newer(300, 150, QImage::Format_RGB32);

@@ -64,6 +64,7 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
     grid->setRowStretch(r, 1);
 
     connect(integrator_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+        enableWhatItUses(name.toStdString());
         emitEdit(QStringLiteral("integrator"),
                  [n = name.toStdString()](SimParams& p) { p.integrator = n; });
     });
@@ -94,9 +95,19 @@ void SolverPanel::emitEdit(const QString& what, const ParamChange& change) {
     emit edited(what, --edits_, change); // each edit is its own undo step
 }
 
+// Sweeps and gravity outside the filter steer the Jacobi iteration only, the paper
+// preset only xpbd: the others stay visible, with their values, but cannot be edited.
+void SolverPanel::enableWhatItUses(const std::string& integrator) {
+    const bool jacobi = integrator == "jacobi" || integrator == "jacobi-scalar";
+    iterations_->setEnabled(jacobi);
+    gravityOutside_->setEnabled(jacobi);
+    material_->setEnabled(integrator == "xpbd");
+}
+
 void SolverPanel::showParams(const SimParams& params) {
     updating_ = true;
     integrator_->setCurrentText(QString::fromStdString(params.integrator));
+    enableWhatItUses(params.integrator);
     material_->setCurrentText(QString::fromStdString(params.material.name));
     iterations_->setValue(params.iterations);
     stepsPerSecond_->setValue(static_cast<int>(std::lround(1.0 / params.dt)));

@@ -47,6 +47,7 @@ class SolverPanel : public QWidget {
   private:
     void retranslate();
     void emitEdit(const QString& what, const ParamChange& change);
+    void enableWhatItUses(const std::string& integrator);
 
     int edits_ = 0;
     bool updating_ = false;
