@@ -17,4 +17,14 @@ inline World jacobiScene(std::string_view name, const SceneOptions& options = {}
     return w;
 }
 
+// The scene in the integrator the build can afford, for tests of machinery that is the
+// same for every integrator (undo, replay, resume, scripts, the Fold tool's carry): the
+// default, xpbd, in Release; jacobi under the sanitizers, where xpbd's 40 sub-steps made
+// the sanitized suites 3-4 times slower (CI went from 28 to 48 minutes).
+inline World machineryScene(std::string_view name, const SceneOptions& options = {}) {
+    World w = *makeScene(name, options);
+    if (PAPERFOLD_TEST_SLOWDOWN > 1) w.params.integrator = "jacobi";
+    return w;
+}
+
 } // namespace pf::test

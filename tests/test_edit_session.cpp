@@ -112,7 +112,7 @@ class TestEditSession : public QObject {
 
   private slots:
     void theToolNeverOutrunsItsSpeedLimit() {
-        World w = *makeScene("press");
+        World w = test::machineryScene("press");
         w.sheet = Sheet(); // the tool alone
         EditSession session(w);
         const Vec3 start = session.world().sphere.center;
@@ -132,7 +132,7 @@ class TestEditSession : public QObject {
     }
 
     void pausedTheToolJumpsToItsTargetWithoutAStep() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         const auto step = session.world().stepCount;
         const Vec3 target = session.world().sphere.center + Vec3(0.3, 0.0, 0.0);
         session.setTool(target, 0.02, true, false);
@@ -144,7 +144,7 @@ class TestEditSession : public QObject {
 
     void aStrokeThatChangedNothingHasNothingToUndo() {
         // The button held with the tool 10 cm above the sheet: nothing to give back.
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         const Vec3 above(0.0, 0.1, 0.0);
         session.setTool(above, 0.02, true, false);
         session.placeToolAtTarget();
@@ -158,7 +158,7 @@ class TestEditSession : public QObject {
     void undoGivesBackTheSheetAsItWasBeforeTheStroke() {
         // With breaking off the push only moves the paper: still one undo step, and undo
         // puts every vertex back where it was when the button went down.
-        World w = *makeScene("press");
+        World w = test::machineryScene("press");
         w.params.breaking = false;
         w.params.hinges = false;
         EditSession session(w);
@@ -177,7 +177,7 @@ class TestEditSession : public QObject {
 
     void onlyTheNewestStrokesKeepTheirSheetStates() {
         // Each stroke here lifts vertex 0 by 1 mm (as a push would move it).
-        World w = *makeScene("press");
+        World w = test::machineryScene("press");
         EditSession session(w);
         const Vec3 above(0.0, 0.2, 0.0);
         const int count = int(EditSession::kStrokesWithLook) + 1;
@@ -413,7 +413,7 @@ class TestEditSession : public QObject {
     // Under a held tool Settle does nothing: the push would go on through paper that
     // cannot break, and undo would mix the two.
     void settleIsRefusedWhileTheToolIsPressed() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         const double radius = session.world().sphere.radius;
         const Vec3 on = session.world().sheet.verts.x[0] + Vec3(0.0, radius * 0.5, 0.0);
         session.setTool(on, radius, true, true);
@@ -424,7 +424,7 @@ class TestEditSession : public QObject {
     }
 
     void aSessionWithASettleReplays() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         pushStroke(session, 0.0, 0.5);
         session.settle();
         session.advance(900);
@@ -443,7 +443,7 @@ class TestEditSession : public QObject {
         // pull it springs up on release, 22 cm after 1.5 s, instead of falling.
         SceneOptions coarse; // a coarser sheet: xpbd's contacts are slow under sanitizers
         coarse.resolution = 9;
-        World paper = *makeScene("press", coarse);
+        World paper = test::machineryScene("press", coarse);
         paper.params.integrator = "xpbd";
         EditSession session(paper);
         const double dt = session.world().params.dt;
@@ -482,7 +482,7 @@ class TestEditSession : public QObject {
     }
 
     void aGrabNeverPullsThePaperBelowTheDesk() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         const Vec3 corner = session.world().sheet.verts.x[0];
         session.grab(corner, true, true);
         session.grab(corner - Vec3(0.0, 0.2, 0.0), true, false);
@@ -491,7 +491,7 @@ class TestEditSession : public QObject {
     }
 
     void aGrabLeavesPinnedPaperAndThePushToolAlone() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         const Vec3 corner = session.world().sheet.verts.x[0];
         QVERIFY(session.pin(corner, 1e-4));
         session.grab(corner, true, true);
@@ -507,7 +507,7 @@ class TestEditSession : public QObject {
     // An undo lets a held grab go; moves of the hand that still holds nothing do not pick
     // up whatever is nearest, and the saved world has no pin where the hand held.
     void anUndoLetsAGrabGoAndOnlyABeginPicksUp() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         const Vec3 corner = session.world().sheet.verts.x[0];
         const auto pinned = session.pin(session.world().sheet.verts.x[5], 1e-4);
         QVERIFY(pinned);
@@ -532,7 +532,7 @@ class TestEditSession : public QObject {
     void unpinningWakesASleepingSheet() {
         SceneOptions coarse;
         coarse.resolution = 9;
-        World w = *makeScene("press", coarse);
+        World w = test::machineryScene("press", coarse);
         w.params.integrator = "xpbd";
         EditSession session(w);
         const auto& V = session.world().sheet.verts;
@@ -557,7 +557,7 @@ class TestEditSession : public QObject {
     void aScriptLettingGoWakesASleepingSheet() {
         SceneOptions coarse;
         coarse.resolution = 9;
-        World w = *makeScene("press", coarse);
+        World w = test::machineryScene("press", coarse);
         w.params.integrator = "xpbd";
         PinGroup hold;
         hold.vertices = {0};
@@ -581,7 +581,7 @@ class TestEditSession : public QObject {
     // A script's pinned vertex that the user freed and then grabs follows the hand, not
     // the script.
     void aGrabbedScriptVertexFollowsTheHand() {
-        EditSession session(*makeScene("drape"));
+        EditSession session(test::machineryScene("drape"));
         const auto& V = session.world().sheet.verts;
         Index scripted = kNone;
         for (Index i = 0; i < V.size() && scripted == kNone; ++i)
@@ -601,7 +601,7 @@ class TestEditSession : public QObject {
     // Pin: the vertices around the click stand still while the rest falls; a second click
     // frees them; both are undo steps, and the pins are saved with the sheet.
     void aPinHoldsTogglesUndoesAndIsSaved() {
-        EditSession session(*makeScene("drop"));
+        EditSession session(test::machineryScene("drop"));
         const Vec3 at = session.world().sheet.verts.x[7];
         const double radius = 0.02;
         const auto pinned = session.pin(at, radius);
@@ -652,7 +652,7 @@ class TestEditSession : public QObject {
     }
 
     void aSessionWithGrabsAndPinsReplays() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         const Vec3 a = session.world().sheet.verts.x[0];
         const Vec3 b = session.world().sheet.verts.x[session.world().sheet.verts.size() - 1];
         session.pin(b, 0.02);
@@ -682,7 +682,7 @@ class TestEditSession : public QObject {
     // first and drew the flat rim out to 1.7 times its size). Undone, the gathered sheet
     // goes on with its own cycle: held, pulled out flat.
     void aResetSceneStartsItsScriptWhenItIsReset() {
-        World scene = *makeScene("crumple-cycles");
+        World scene = test::machineryScene("crumple-cycles");
         scene.params.breaking = false;
         const World fresh = scene;
         const std::vector<Index> rim = fresh.script.pins.front().vertices;
@@ -761,11 +761,11 @@ class TestEditSession : public QObject {
     }
 
     void aNewSheetForgetsTheStrokesButKeepsTheTool() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         QVERIFY(pushStroke(session, 0.0, 0.5).has_value());
         const double radius = 0.031;
         session.setTool(session.world().sphere.center, radius, true, false);
-        session.replaceWorld(*makeScene("drape"));
+        session.replaceWorld(test::machineryScene("drape"));
         QVERIFY(!session.undoStroke(0).has_value());
         QCOMPARE(session.world().sphere.radius, radius);
         QVERIFY(session.world().sphere.active);
@@ -773,7 +773,7 @@ class TestEditSession : public QObject {
     }
 
     void aRecordedSessionReplaysBitForBit() {
-        EditSession live(*makeScene("press"));
+        EditSession live(test::machineryScene("press"));
         scriptedSession(live);
         const EditLog log = live.log();
         QVERIFY(log.commands.size() > 20);
@@ -798,12 +798,12 @@ class TestEditSession : public QObject {
     void aRecordingThatBeginsMidStrokeReplays() {
         // New while the button is held: the recording starts with the stroke under way,
         // and its undo must replay the same.
-        EditSession live(*makeScene("press"));
+        EditSession live(test::machineryScene("press"));
         const auto path = makeScene("press")->script.sphereKeys;
         const double radius = live.world().sphere.radius;
         live.setTool(spherePathAt(path, 0.0), radius, true, true);
         QCOMPARE(live.advance(8), StepStatus::Ok);
-        live.replaceWorld(*makeScene("press"));
+        live.replaceWorld(test::machineryScene("press"));
         for (double t = 0.0; t < 0.5; t += 1.0 / 60.0) {
             live.setTool(spherePathAt(path, t), radius, true, true);
             QCOMPARE(live.advance(4), StepStatus::Ok);
@@ -826,7 +826,7 @@ class TestEditSession : public QObject {
         // The explicit integrator at the editor's frame step blows up; the editor pauses,
         // the user picks the paper's integrator and plays on. The failed attempt (the tool
         // moved, the integrator restarted) is part of the session.
-        World w = *makeScene("press");
+        World w = test::machineryScene("press");
         w.params.integrator = "symplectic";
         w.params.dt = 1.0 / 60.0;
         w.sheet.verts.x[100].y() += 0.002; // a flat sheet at rest has nothing to amplify
@@ -854,15 +854,15 @@ class TestEditSession : public QObject {
         // As Box2D's test_determinism.c: a fixed scene and command script must reach this
         // hash. A deliberate change of the model or the editing layer updates it in the
         // same commit; anything else that changes it is a bug.
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         scriptedSession(session);
         QCOMPARE(hex(stateHash(session.world().sheet)), QStringLiteral("45dc0cf57d798445"));
     }
 
     void aNewSheetStartsANewRecording() {
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         scriptedSession(session);
-        session.replaceWorld(*makeScene("drape"));
+        session.replaceWorld(test::machineryScene("drape"));
         const EditLog log = session.log();
         QVERIFY(log.commands.empty());
         QCOMPARE(log.start.scene, std::string("drape"));
@@ -871,7 +871,7 @@ class TestEditSession : public QObject {
     void badRecordingsAreRefusedWithOneLine_data() {
         QTest::addColumn<QByteArray>("bytes");
         QTest::addColumn<QString>("error");
-        EditSession session(*makeScene("press"));
+        EditSession session(test::machineryScene("press"));
         scriptedSession(session);
         const EditLog log = session.log();
         const QByteArray good = encodeRecording(log);

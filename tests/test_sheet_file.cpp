@@ -257,7 +257,7 @@ class TestSheetFile : public QObject {
     // the sheet resumes bit for bit through the turn and the release; a turn about a
     // non-unit axis is refused.
     void aTurningPinGroupResumesExactly() {
-        Simulation whole(*makeScene("fold"));
+        Simulation whole(test::machineryScene("fold"));
         for (int k = 0; k < 200; ++k) QCOMPARE(whole.step(), StepStatus::Ok);
         const QByteArray saved = encodeWorld(whole.world());
         WorldLoad l = decodeWorld(saved);
@@ -293,7 +293,7 @@ class TestSheetFile : public QObject {
     // sheet resumes bit for bit into the next cycle; a draw without its point, or at an
     // absurd rate, is refused.
     void aDrawingPinGroupResumesExactly() {
-        Simulation whole(*makeScene("crumple-cycles"));
+        Simulation whole(test::machineryScene("crumple-cycles"));
         for (int k = 0; k < 150; ++k) QCOMPARE(whole.step(), StepStatus::Ok);
         const QByteArray saved = encodeWorld(whole.world());
         WorldLoad l = decodeWorld(saved);
@@ -329,8 +329,8 @@ class TestSheetFile : public QObject {
     }
 
     void resumeIsExact() {
-        Simulation whole(*makeScene("press"));
-        Simulation first(*makeScene("press"));
+        Simulation whole(test::machineryScene("press"));
+        Simulation first(test::machineryScene("press"));
         for (int k = 0; k < 300; ++k) {
             whole.step();
             first.step();
