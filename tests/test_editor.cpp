@@ -353,6 +353,9 @@ class TestEditor : public QObject {
         window->action("play")->setChecked(false);
         window->action("undo")->trigger();
         window->simulation()->stepOnce();
+        // Paused, the worker's next frame puts the sphere on the cursor (a recorded
+        // PlaceTool): wait for it, or it could land between the save and the look below.
+        QTRY_VERIFY(worldOf(*window)->sphere.center == window->toolTarget());
         window->simulation()->sync();
 
         QTemporaryDir dir;
