@@ -1,4 +1,5 @@
 // Same seed and inputs give a bit-identical run; another seed gives another run.
+#include "JacobiScene.h"
 #include "Scenes.h"
 #include "SheetStats.h"
 #include "SheetValidation.h"
@@ -25,7 +26,7 @@ struct RunResult {
 RunResult run(std::uint64_t seed, int steps) {
     SceneOptions o;
     o.seed = seed;
-    Simulation sim(*makeScene("press", o));
+    Simulation sim(test::machineryScene("press", o));
     for (int k = 0; k < steps; ++k)
         if (sim.step() != StepStatus::Ok) return {0, -1, 0, "diverged"};
     const auto st = computeStats(sim.world().sheet);
@@ -87,7 +88,7 @@ class TestDeterminism : public QObject {
 
     void copiedWorldContinuesIdentically() {
         // A World is plain data: a copy taken mid-run continues exactly like the original.
-        Simulation a(*makeScene("press"));
+        Simulation a(test::machineryScene("press"));
         for (int k = 0; k < 200; ++k) a.step();
         Simulation b(a.world());
         for (int k = 0; k < 200; ++k) {
@@ -98,7 +99,7 @@ class TestDeterminism : public QObject {
     }
 
     void massIsConservedThroughBreaks() {
-        Simulation sim(*makeScene("press"));
+        Simulation sim(test::machineryScene("press"));
         const double m0 = totalMass(sim.world().sheet);
         for (int k = 0; k < 500; ++k) sim.step();
         QVERIFY(computeStats(sim.world().sheet).breaks > 0);
