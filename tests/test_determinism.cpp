@@ -156,7 +156,11 @@ class TestDeterminism : public QObject {
         QCOMPARE(WorkerPool(2).partsFor(w.sheet.verts.size()), 2);
         const ThreadedRun one = runOn(1, scene.toStdString(), integrator.toStdString(), steps);
         QVERIFY2(one.breaks > 0 && one.hinges > 0, "the run must break and hinge to mean much");
-        for (int threads : {2, 3}) {
+        // Sanitized, three threads only: uneven parts and more threads than cores, and
+        // the races ThreadSanitizer looks for need no second count (it took 212 s of CI).
+        const std::vector<int> counts =
+            PAPERFOLD_TEST_SLOWDOWN > 1 ? std::vector<int>{3} : std::vector<int>{2, 3};
+        for (int threads : counts) {
             const ThreadedRun many =
                 runOn(threads, scene.toStdString(), integrator.toStdString(), steps);
             QCOMPARE(many.hash, one.hash);
