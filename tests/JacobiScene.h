@@ -17,13 +17,20 @@ inline World jacobiScene(std::string_view name, const SceneOptions& options = {}
     return w;
 }
 
-// The scene in the integrator the build can afford, for tests of machinery that is the
-// same for every integrator (undo, replay, resume, scripts, the Fold tool's carry): the
-// default, xpbd, in Release; jacobi under the sanitizers, where xpbd's 40 sub-steps made
-// the sanitized suites 3-4 times slower (CI went from 28 to 48 minutes).
+// Whether tests of machinery that is the same for every integrator (undo, replay, resume,
+// scripts, the tools, the command line's files) step their sheets in jacobi rather than
+// the default xpbd: under the sanitizers, where xpbd's 40 sub-steps made the sanitized
+// suites 3-4 times slower (CI went from 28 to 48 minutes). Release runs the default.
+inline constexpr bool kMachineryInJacobi = PAPERFOLD_TEST_SLOWDOWN > 1;
+
+// `w` in the integrator the build can afford for such tests (kMachineryInJacobi).
+inline void affordMachinery(World& w) {
+    if (kMachineryInJacobi) w.params.integrator = "jacobi";
+}
+
 inline World machineryScene(std::string_view name, const SceneOptions& options = {}) {
     World w = *makeScene(name, options);
-    if (PAPERFOLD_TEST_SLOWDOWN > 1) w.params.integrator = "jacobi";
+    affordMachinery(w);
     return w;
 }
 

@@ -2,6 +2,7 @@
 // (under xvfb-run), checked against what the simulation thread reports.
 #include "ChartBrowser.h"
 #include "FoldAngle.h"
+#include "JacobiScene.h"
 #include "Language.h"
 #include "MainWindow.h"
 #include "PaperLookMenu.h"
@@ -106,8 +107,6 @@ void moveMouse(QWidget* view, const QPoint& p, Qt::MouseButtons buttons) {
     QApplication::sendEvent(view, &move);
 }
 
-// Saves the session through File ▸ Save Recording and replays it headless: the replay
-// must end where the editor is, bit for bit.
 // File ▸ Save Recording, and the world the saved session ends in. Paused, the worker's
 // next frame may still put the sphere on the cursor (a recorded PlaceTool, which failed
 // CI once when it landed between the save and the look): a save with a change on
@@ -123,6 +122,8 @@ std::shared_ptr<const World> saveRecordingWhenStill(MainWindow& w) {
     return nullptr;
 }
 
+// Saves the session through File ▸ Save Recording and replays it headless: the replay
+// must end where the editor is, bit for bit.
 void checkReplay(MainWindow& w, QString& nextFile, const QString& lastError) {
     QTemporaryDir dir;
     nextFile = dir.filePath(QStringLiteral("tool.paperrec"));
@@ -227,13 +228,10 @@ class TestEditor : public QObject {
                     window->viewport()->snapshot()->x == worldOf(*window)->sheet.verts.x);
     }
 
-    // The tool tests that step the sheet for seconds run it in jacobi under the
-    // sanitizers, where xpbd's 40 sub-steps made them take a minute each (grab 59 s,
-    // fold 54 s under AddressSanitizer, twice that under ThreadSanitizer). What they test,
-    // the tools and their undo and replay, is the same in every integrator; the Release
-    // build runs them in the default.
+    // The tool tests that step the sheet for seconds, in the integrator the build can
+    // afford (JacobiScene.h): under AddressSanitizer xpbd made grab take 59 s and fold 54.
     void inJacobiWhenSanitized() {
-        if (PAPERFOLD_TEST_SLOWDOWN > 1) openInJacobi();
+        if (test::kMachineryInJacobi) openInJacobi();
     }
 
     void makeWindow() {

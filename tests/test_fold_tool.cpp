@@ -3,6 +3,7 @@
 // undo step, replays bit for bit, and a sheet saved mid-fold finishes the fold.
 #include "EditSession.h"
 #include "FoldAngle.h"
+#include "JacobiScene.h"
 #include "RecordingFile.h"
 #include "Scenes.h"
 #include "SheetFile.h"
@@ -25,8 +26,8 @@ EditSession editorSession(bool damage = true, const std::string& integrator = {}
     w.params.breaking = w.params.hinges = damage;
     if (!integrator.empty())
         w.params.integrator = integrator;
-    else if (PAPERFOLD_TEST_SLOWDOWN > 1)
-        w.params.integrator = "jacobi"; // the carry's machinery, affordable (JacobiScene.h)
+    else
+        test::affordMachinery(w); // the carry's machinery
     EditSession s(std::move(w));
     [&] { QCOMPARE(s.advance(120), StepStatus::Ok); }();
     return s;

@@ -25,10 +25,9 @@ struct Result {
 };
 
 Result runPaperfold(QStringList args, bool noDisplay = false) {
-    // A sanitized build steps a new scene in the paper's jacobi unless the test names an
-    // integrator: the commands' parsing, files and output are the same for every one, and
-    // xpbd's 40 sub-steps cost this suite minutes there (JacobiScene.h says the same).
-    if (PAPERFOLD_TEST_SLOWDOWN > 1 && !args.isEmpty() &&
+    // A new scene is stepped in the integrator the build can afford unless the test names
+    // one: the commands' parsing, files and output are the same for every integrator.
+    if (pf::test::kMachineryInJacobi && !args.isEmpty() &&
         args.front() == QLatin1String("simulate") && args.contains(QLatin1String("--scene")) &&
         !args.contains(QLatin1String("--integrator")))
         args << QStringLiteral("--integrator") << QStringLiteral("jacobi");
