@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Integrator.h"
+#include "StretchPass.h"
 #include "VectorLdlt.h"
 
 #include <Eigen/SparseCholesky>
@@ -119,14 +120,12 @@ class XpbdIntegrator final : public Integrator {
         Index a, b;
         double rest, compliance;
         double maxPush, maxPull; // the largest force the constraint exerts each way, N
+        int colour = 0;          // kSharedColour: shares vertices with others of it
     };
+    static constexpr int kSharedColour = 63;
     std::vector<StretchConstraint> stretch_;
     // The same, as the sub-steps of one step use them (advance() says why).
-    struct StepConstraint {
-        Index a, b;
-        double wa, wb, rest, gain, lowest, highest;
-    };
-    std::vector<StepConstraint> stretchStep_;
+    StretchPass stretchStep_;
     // The projection holds the structural edges (unlimited pull) not pinned at both ends.
     bool projects(const StretchConstraint& k) const {
         return k.maxPull == std::numeric_limits<double>::infinity() && w_[k.a] + w_[k.b] != 0.0;
