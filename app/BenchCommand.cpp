@@ -176,8 +176,10 @@ int runBench(const QStringList& arguments) {
                         "swinging and at rest, and the largest real-time sheet (scaling.csv, "
                         "scaling.png).")},
         {QStringLiteral("integrator"),
-         QStringLiteral("With --scaling: the integrator measured (default jacobi)."),
-         QStringLiteral("name"), QStringLiteral("jacobi")},
+         QStringLiteral("With --scaling: the integrator measured (default: the default "
+                        "integrator, %1).")
+             .arg(QString::fromStdString(SimParams{}.integrator)),
+         QStringLiteral("name"), QString::fromStdString(SimParams{}.integrator)},
     });
     addThreadsOption(parser);
     if (!parseCommand(parser, arguments)) return 0;
