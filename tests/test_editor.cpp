@@ -427,6 +427,26 @@ class TestEditor : public QObject {
         QCOMPARE(window->currentFile(), nextFile);
     }
 
+    // A name typed without a suffix gets the kind's, so that Open's "*.paper" filter
+    // lists the sheet; a name with a suffix is kept as typed.
+    void aNameTypedWithoutASuffixGetsTheKindsSuffix() {
+        QTemporaryDir dir;
+        nextFile = dir.filePath(QStringLiteral("plain"));
+        window->action("saveAs")->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        QVERIFY(QFileInfo::exists(nextFile + QStringLiteral(".paper")));
+        QVERIFY(!QFileInfo::exists(nextFile));
+        QCOMPARE(window->currentFile(), nextFile + QStringLiteral(".paper"));
+        QVERIFY(window->windowTitle().startsWith(QStringLiteral("plain.paper")));
+        nextFile = dir.filePath(QStringLiteral("take"));
+        window->action("saveRecording")->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        QVERIFY(QFileInfo::exists(nextFile + QStringLiteral(".paperrec")));
+        nextFile = dir.filePath(QStringLiteral("sheet.bak"));
+        window->action("saveAs")->trigger();
+        QVERIFY(QFileInfo::exists(nextFile));
+    }
+
     void openingACorruptFileShowsTheErrorAndKeepsTheSheet() {
         QTemporaryDir dir;
         nextFile = dir.filePath(QStringLiteral("broken.paper"));

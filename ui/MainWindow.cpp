@@ -269,15 +269,15 @@ void MainWindow::createActions() {
             });
     connect(make("save", QKeySequence::Save, QStyle::SP_DialogSaveButton), &QAction::triggered,
             this, [this] {
-                const QString path = file_.isEmpty() ? chooseFile(FileDialog::Save) : file_;
+                const QString path = file_.isEmpty() ? chooseFileToWrite(FileDialog::Save) : file_;
                 if (!path.isEmpty()) saveFile(path);
             });
     connect(make("saveAs", QKeySequence::SaveAs), &QAction::triggered, this, [this] {
-        const QString path = chooseFile(FileDialog::Save);
+        const QString path = chooseFileToWrite(FileDialog::Save);
         if (!path.isEmpty()) saveFile(path);
     });
     connect(make("saveRecording"), &QAction::triggered, this, [this] {
-        const QString path = chooseFile(FileDialog::SaveRecording);
+        const QString path = chooseFileToWrite(FileDialog::SaveRecording);
         if (!path.isEmpty()) saveRecording(path);
     });
     connect(make("exportImage", QKeySequence(tr("Ctrl+E"))), &QAction::triggered, this,
@@ -633,11 +633,28 @@ bool MainWindow::saveFile(const QString& path) {
     return true;
 }
 
+// A name typed without a suffix gets the kind's: a sheet saved as "folded" was not listed
+// by Open's "*.paper" filter, nor could Open take it.
+QString MainWindow::chooseFileToWrite(FileDialog kind) {
+    const QString path = chooseFile(kind);
+    if (path.isEmpty() || !QFileInfo(path).suffix().isEmpty()) return path;
+    switch (kind) {
+    case FileDialog::Save:
+        return path + QStringLiteral(".paper");
+    case FileDialog::SaveRecording:
+        return path + QStringLiteral(".paperrec");
+    case FileDialog::ExportImage:
+        return path + QStringLiteral(".png");
+    default:
+        return path;
+    }
+}
+
 bool MainWindow::maybeSave() {
     if (!isModified()) return true;
     switch (askToSave()) {
     case QMessageBox::Save: {
-        const QString path = file_.isEmpty() ? chooseFile(FileDialog::Save) : file_;
+        const QString path = file_.isEmpty() ? chooseFileToWrite(FileDialog::Save) : file_;
         return !path.isEmpty() && saveFile(path);
     }
     case QMessageBox::Discard:
@@ -685,7 +702,7 @@ void MainWindow::exportImage() {
                       .arg(most));
         return;
     }
-    const QString path = chooseFile(FileDialog::ExportImage);
+    const QString path = chooseFileToWrite(FileDialog::ExportImage);
     if (path.isEmpty()) return;
     RenderOptions picture = viewport_->renderOptions();
     picture.pins = false; // editing marks, not the artwork

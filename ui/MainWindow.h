@@ -97,6 +97,8 @@ class MainWindow : public QMainWindow {
     void connectParameters();
     void onSnapshot();
     void updateTitle();
+    // chooseFile, with the kind's suffix added to a name typed without one.
+    QString chooseFileToWrite(FileDialog kind);
     bool maybeSave();
     void saveRecording(const QString& path);
     void exportImage();
