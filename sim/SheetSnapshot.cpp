@@ -5,6 +5,16 @@
 
 namespace pf {
 
+bool drawsTheSame(const SheetSnapshot& a, const SheetSnapshot& b) {
+    return a.x == b.x && a.X == b.X && a.tris == b.tris && a.springEnds == b.springEnds &&
+           a.springKind == b.springKind && a.breakable == b.breakable &&
+           a.breakProbability == b.breakProbability && a.strain == b.strain &&
+           a.recentlyBroken == b.recentlyBroken && a.vertexStrain == b.vertexStrain &&
+           a.pinned == b.pinned && a.sphere.center == b.sphere.center &&
+           a.sphere.radius == b.sphere.radius && a.sphere.active == b.sphere.active &&
+           a.groundEnabled == b.groundEnabled && a.groundHeight == b.groundHeight;
+}
+
 SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds) {
     const World& world = sim.world();
     const Sheet& s = world.sheet;

@@ -30,6 +30,9 @@ struct SheetSnapshot {
     std::uint64_t serial = 0;
 };
 
+// Whether a and b draw the same picture: everything but the clock (time, step, serial).
+bool drawsTheSame(const SheetSnapshot& a, const SheetSnapshot& b);
+
 // `recentSeconds`: how far back a break counts as recent. The break probabilities are
 // the ones the simulation's last step drew (Simulation::breakProbabilities).
 SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds = 1.0);

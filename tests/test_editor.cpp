@@ -32,6 +32,7 @@
 #include <QMenuBar>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStatusBar>
@@ -425,6 +426,25 @@ class TestEditor : public QObject {
         QVERIFY(opened->rng.state() == saved->rng.state());
         QVERIFY(!window->isModified());
         QCOMPARE(window->currentFile(), nextFile);
+    }
+
+    // The worker publishes the sheet at every frame; a sheet at rest draws nothing new,
+    // so the view is not painted again (it kept a core 85 % busy under software GL),
+    // while anything that changes the picture still is.
+    void aSheetAtRestIsNotDrawnAgain() {
+        QSignalSpy frames(window->viewport(), &Viewport::frameDrawn);
+        window->simulation()->setPlaying(true);
+        // The flat sheet lies still on the desk: after a moment every frame is the same.
+        QTest::qWait(500);
+        const std::int64_t before = worldOf(*window)->stepCount;
+        frames.clear();
+        QTest::qWait(1000);
+        QVERIFY(worldOf(*window)->stepCount > before); // it was playing all along
+        const auto still = frames.count();
+        QVERIFY2(still <= 1, qPrintable(QString::number(still)));
+        window->action("overlay.wireframe")->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(frames.count() > still, kSignalWaitMs);
+        window->simulation()->setPlaying(false);
     }
 
     // A name typed without a suffix gets the kind's, so that Open's "*.paper" filter
