@@ -20,6 +20,9 @@ struct ContactScene {
     SphereTool sphere; // center and velocity at the end of the step
     bool ground = false;
     double groundHeight = 0.0;
+    // The pinned vertex a hand holds (a grab), or kNone: its velocity at the start of
+    // the step is the hand's. An integrator may hold it by a grip rather than rigidly.
+    Index hand = kNone;
 };
 
 class Integrator {

@@ -106,7 +106,7 @@ StepStatus Simulation::step() {
     copyOnto(savedV_, sheet.verts.v, pool);
     savedPaper_ = sheet.paper;
     if (integrator_->resolvesContacts()) {
-        integrator_->setContacts({w.sphere, w.groundEnabled, w.groundHeight});
+        integrator_->setContacts({w.sphere, w.groundEnabled, w.groundHeight, heldVertex_});
         integrator_->advance(sheet, p);
     } else {
         integrator_->advance(sheet, p);

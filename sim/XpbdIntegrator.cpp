@@ -646,6 +646,14 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     const Material& mat = params.material;
     w_.resize(static_cast<std::size_t>(nv));
     for (Index i = 0; i < nv; ++i) w_[i] = V.pinned[i] || !(V.m[i] > 0.0) ? 0.0 : 1.0 / V.m[i];
+    // The vertex a hand holds is pinned for the bending solve and for sleep, but in the
+    // sub-steps it is paper like any other, held to the hand's path (its pinned velocity
+    // over the step) by a force-limited grip.
+    const Index hand = contacts_.hand;
+    const bool holding = hand >= 0 && hand < nv && V.pinned[hand] && V.m[hand] > 0.0;
+    const Vec3 handFrom = holding ? V.x[hand] : Vec3::Zero();
+    const Vec3 handVelocity = holding ? V.v[hand] : Vec3::Zero();
+    if (holding) w_[hand] = 1.0 / V.m[hand];
     xPrev_.resize(static_cast<std::size_t>(nv));
     stepStart_ = V.x;
     const SphereTool& sp = contacts_.sphere;
@@ -789,6 +797,14 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             }
         }
     };
+    const auto holdByHand = [&](int sub) {
+        if (!holding) return;
+        const Vec3 e = V.x[hand] - (handFrom + handVelocity * (h * (sub + 1)));
+        const double len = e.norm();
+        if (!(len > 0.0)) return;
+        const double lambda = std::min(len / (w_[hand] + kGripCompliance / h2), kHandForce * h2);
+        V.x[hand] -= (w_[hand] * lambda / len) * e;
+    };
     const auto collideGround = [&](bool withFriction) {
         if (!contacts_.ground) return;
         const double gh = contacts_.groundHeight;
@@ -832,12 +848,17 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         std::fill(touched_.begin(), touched_.end(), std::uint8_t{0});
         collideSphere(c, cPrev, true);
         pullWithTool(c);
+        holdByHand(sub);
         collideGround(true);
         stretchStep_.relax(V.x);
         // Long-range attachments (Kim et al. 2012): no vertex gets farther from its
         // nearest pinned vertex than the paper between them allows, so a hanging sheet
         // holds its length without the pull walking one edge per pass from the pins.
+        // Not to a hand: tethered to it as to a pin, the paper round a grab was yanked
+        // along, against the real pins' tethers (lifting the middle of a sheet pinned at
+        // its corners read 1,700 % stretch with the grip, 454 % with a rigid hand).
         for (const Tether& t : tethers_) {
+            if (holding && t.pin == hand) continue;
             const Vec3 d = V.x[t.vertex] - V.x[t.pin];
             const double len = d.norm();
             if (len > t.length) V.x[t.vertex] = V.x[t.pin] + d * (t.length / len);

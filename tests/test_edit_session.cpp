@@ -11,6 +11,7 @@
 #include "SheetSnapshot.h"
 #include "SheetStats.h"
 #include "SheetValidation.h"
+#include "XpbdIntegrator.h"
 
 #include <QTest>
 #include <QtEndian>
@@ -459,7 +460,9 @@ class TestEditSession : public QObject {
                 EditSession::kMaxToolSpeed * dt * (1 + 1e-12));
         session.advance(119);
         const auto& V = session.world().sheet.verts;
-        QVERIFY2((V.x[0] - target).norm() < 1e-6,
+        // Held by the hand's grip (kGripCompliance): the hanging paper's weight pulls it a
+        // few hundredths of a millimetre below the hand.
+        QVERIFY2((V.x[0] - target).norm() < 1e-4,
                  qPrintable(QString::number((V.x[0] - target).norm())));
         // The paper next to the corner hangs from it, above the desk.
         Index lifted = 0;
@@ -479,6 +482,73 @@ class TestEditSession : public QObject {
         QVERIFY(session.redoStroke(ended->stroke));
         QCOMPARE(session.world().sheet.verts.x, released);
         QVERIFY(!session.world().sheet.verts.pinned[0]);
+    }
+
+    // The hand holds paper by a pinch (kHandForce), and the paper it lifts is not tied to
+    // it by the pins' long-range tethers: pinned flat at its four corners, the sheet
+    // tents up a little in the middle and stops; pinned along one short edge, it swings
+    // up about that edge, no higher than the paper between them reaches. (Held rigidly
+    // and tethered, the hand tore the four-pinned sheet: 306 breaks and 454 % strain from
+    // a 4 cm lift, and the shredded sheet never came to rest.)
+    void aGrabCannotTearPinnedPaper_data() {
+        QTest::addColumn<int>("pins");
+        QTest::newRow("four corners") << 4;
+        QTest::newRow("one short edge") << 2;
+    }
+    void aGrabCannotTearPinnedPaper() {
+        QFETCH(int, pins);
+        SceneOptions coarse; // xpbd's sub-steps are slow under the sanitizers
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) coarse.resolution = 9;
+        World paper = *makeScene("press", coarse);
+        paper.script.sphereKeys.clear();
+        paper.sphere.active = false;
+        paper.params.integrator = "xpbd";
+        EditSession session(paper);
+        const auto& V = session.world().sheet.verts;
+        const Index n = V.size();
+        // The corners, farthest along ±x ± z; the sheet's long side is along z.
+        std::vector<Index> corners;
+        for (const Vec3& dir : {Vec3(1, 0, -1), Vec3(-1, 0, -1), Vec3(1, 0, 1), Vec3(-1, 0, 1)}) {
+            Index best = 0;
+            for (Index i = 1; i < n; ++i)
+                if (V.x[i].dot(dir) > V.x[best].dot(dir)) best = i;
+            corners.push_back(best);
+        }
+        corners.resize(static_cast<std::size_t>(pins));
+        for (Index c : corners) QVERIFY(session.pin(V.x[c], 1e-4));
+        Vec3 centre = Vec3::Zero();
+        for (Index i = 0; i < n; ++i) centre += V.x[i] / double(n);
+        QVERIFY(!session.grab(centre, true, true));
+        const Index held = session.grabbedVertex();
+        QVERIFY(held != kNone);
+        const Vec3 start = V.x[held];
+        session.grab(start + Vec3(0.0, 0.4, 0.0), true, false); // far beyond the paper
+        const Index breaksBefore = computeStats(session.world().sheet).breaks;
+        double worstStretch = 0.0;
+        for (int k = 0; k < 360; ++k) {
+            QCOMPARE(session.advance(1), StepStatus::Ok);
+            worstStretch = std::max(worstStretch, computeStats(session.world().sheet).maxStretch);
+        }
+        const Sheet& sheet = session.world().sheet;
+        const double rise = sheet.verts.x[held].y() - start.y();
+        if (pins == 4) {
+            // It tents up about a centimetre, as the paper round it wrinkles, and stops.
+            QVERIFY2(rise < 0.03, qPrintable(QString::number(rise)));
+        } else {
+            // About the pinned edge, at most as high as the paper between them is wide.
+            const Vec2 a = sheet.verts.X[corners[0]], b = sheet.verts.X[corners[1]];
+            const Vec2 p = sheet.verts.X[held], e = (b - a).normalized();
+            const double across = ((p - a) - (p - a).dot(e) * e).norm();
+            QVERIFY2(rise > 0.5 * across && rise <= across * 1.01,
+                     qPrintable(QStringLiteral("rise %1 m, %2 m of paper to the pinned edge")
+                                    .arg(rise)
+                                    .arg(across)));
+        }
+        // What holds today, short of issue 9's 1 %: the four-pinned tent keeps 1.5-4 %
+        // stretch and a few breaks (docs/material.md, "What is open").
+        QVERIFY2(worstStretch <= (pins == 4 ? 0.06 : 0.025),
+                 qPrintable(QString::number(worstStretch)));
+        QVERIFY(computeStats(sheet).breaks <= breaksBefore + 10);
     }
 
     void aGrabNeverPullsThePaperBelowTheDesk() {
@@ -595,7 +665,10 @@ class TestEditSession : public QObject {
         const Vec3 target = at + Vec3(0.03, 0.02, 0.01);
         session.grab(target, true, false);
         session.advance(120);
-        QVERIFY((V.x[scripted] - target).norm() < 1e-6);
+        // xpbd's hand holds it by a grip: the paper pulled taut between the hand and the
+        // other pin draws it off by the grip's slack, at most its force × compliance.
+        QVERIFY2((V.x[scripted] - target).norm() <= kHandForce * kGripCompliance,
+                 qPrintable(QString::number((V.x[scripted] - target).norm())));
     }
 
     // Pin: the vertices around the click stand still while the rest falls; a second click
