@@ -489,7 +489,7 @@ class TestEditSession : public QObject {
     // tents up a little in the middle and stops; pinned along one short edge, it swings
     // up about that edge, no higher than the paper between them reaches. (Held rigidly
     // and tethered, the hand tore the four-pinned sheet: 306 breaks and 454 % strain from
-    // a 4 cm lift, and the shredded sheet never came to rest.)
+    // a 40 px drag upward in the editor, and the shredded sheet never came to rest.)
     void aGrabCannotTearPinnedPaper_data() {
         QTest::addColumn<int>("pins");
         QTest::newRow("four corners") << 4;
