@@ -354,14 +354,22 @@ void XpbdIntegrator::rebuild(Sheet& sheet, const SimParams& params) {
                 plastic_[q] = it->second;
                 sheet.paper.plastic.push_back({stencils_[q].v, it->second});
             }
+    // Long-range attachments to the pins, not to a hand: the hand is paper held by a
+    // grip (step), so the vertex it holds is tethered like any other, and the paper
+    // round it to the nearest real pin. Tethered to the hand as to a pin, the paper
+    // round a grab was yanked along, against the real pins' tethers (lifting the middle
+    // of a sheet pinned at its corners read 1,700 % stretch with the grip, 454 % with a
+    // rigid hand).
     tethers_.clear();
     const auto& V = sheet.verts;
+    const Index hand = contacts_.hand;
+    const auto isPin = [&](Index i) { return V.pinned[i] && i != hand; };
     std::vector<Index> pins;
     for (Index i = 0; i < V.size(); ++i)
-        if (V.pinned[i]) pins.push_back(i);
+        if (isPin(i)) pins.push_back(i);
     if (!pins.empty())
         for (Index i = 0; i < V.size(); ++i) {
-            if (V.pinned[i]) continue;
+            if (isPin(i)) continue;
             Tether t{i, kNone, std::numeric_limits<double>::infinity()};
             for (Index p : pins) {
                 const double d = sheet.materialDistance(i, p);
@@ -612,13 +620,15 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             ++pins;
             pinHash = (pinHash ^ static_cast<std::uint64_t>(i)) * 1099511628211ull;
         }
-    const std::array<std::int64_t, 7> signature{nv,
+    // The hand too: the tethers leave it out (rebuild).
+    const std::array<std::int64_t, 8> signature{nv,
                                                 S.size(),
                                                 sheet.triangleCount(),
                                                 static_cast<std::int64_t>(sheet.events.size()),
                                                 active,
                                                 pins,
-                                                static_cast<std::int64_t>(pinHash)};
+                                                static_cast<std::int64_t>(pinHash),
+                                                contacts_.hand};
     // A changed mesh or paper has already let the tool go and woken the sheet
     // (PaperState::meshChanged, where the change was made).
     if (signature != signature_ || !(builtFor_ == params.material)) {
@@ -854,11 +864,8 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         // Long-range attachments (Kim et al. 2012): no vertex gets farther from its
         // nearest pinned vertex than the paper between them allows, so a hanging sheet
         // holds its length without the pull walking one edge per pass from the pins.
-        // Not to a hand: tethered to it as to a pin, the paper round a grab was yanked
-        // along, against the real pins' tethers (lifting the middle of a sheet pinned at
-        // its corners read 1,700 % stretch with the grip, 454 % with a rigid hand).
         for (const Tether& t : tethers_) {
-            if (holding && t.pin == hand) continue;
+            if (w_[t.vertex] == 0.0) continue; // pinned, not held: it follows its script
             const Vec3 d = V.x[t.vertex] - V.x[t.pin];
             const double len = d.norm();
             if (len > t.length) V.x[t.vertex] = V.x[t.pin] + d * (t.length / len);

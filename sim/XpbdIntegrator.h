@@ -112,7 +112,7 @@ class XpbdIntegrator final : public Integrator {
     bool mustWake(const Sheet& sheet) const;
 
     ContactScene contacts_;
-    std::array<std::int64_t, 7> signature_{-1, -1, -1, -1, -1, -1, -1};
+    std::array<std::int64_t, 8> signature_{-1, -1, -1, -1, -1, -1, -1, -1};
     Material builtFor_;
     std::vector<Stencil> stencils_;
     // Plastic bending: per stencil, the rest value of Σ k x (the curvature the paper
