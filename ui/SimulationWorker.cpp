@@ -123,11 +123,15 @@ void SimulationWorker::advance(int steps) {
 
 void SimulationWorker::frame() {
     if (!playing_) {
+        sinceTick_.invalidate();
+        pacer_.restart();
         if (session_.placeToolAtTarget()) publish(0.0);
         return;
     }
-    const int steps =
-        std::max(1, static_cast<int>(std::lround(kFrameSeconds / session_.world().params.dt)));
+    const double elapsed = sinceTick_.isValid() ? sinceTick_.nsecsElapsed() * 1e-9 : kFrameSeconds;
+    sinceTick_.start();
+    const int steps = pacer_.stepsFor(elapsed, session_.world().params.dt);
+    if (steps == 0) return; // an early tick: the next one runs its steps
     QElapsedTimer t;
     t.start();
     advance(steps);

@@ -1,9 +1,11 @@
 #pragma once
 
 #include "EditSession.h"
+#include "FramePacer.h"
 #include "SheetSnapshot.h"
 #include "SimulationStatus.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 #include <memory>
@@ -63,6 +65,8 @@ class SimulationWorker : public QObject {
     EditSession session_;
     SimulationChannel& channel_;
     QTimer timer_;
+    FramePacer pacer_;
+    QElapsedTimer sinceTick_; // invalid while paused: the first tick of play is one frame
     bool playing_ = true;
 };
 

@@ -1,0 +1,94 @@
+// The editor's pacing (ui/FramePacer): the steps run at each tick of the frame timer keep
+// the simulated time with the wall clock, whatever the ticks' spacing, and a machine
+// that falls behind is not asked for an ever longer catch-up.
+#include "FramePacer.h"
+
+#include <QTest>
+#include <cmath>
+
+using namespace pf;
+
+namespace {
+constexpr double kDt = 1.0 / 240.0;
+}
+
+class TestFramePacer : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void ticksOfAFrameRunAFramesSteps() {
+        FramePacer pacer;
+        for (int tick = 0; tick < 600; ++tick) QCOMPARE(pacer.stepsFor(1.0 / 60.0, kDt), 4);
+    }
+
+    void aTimerThatFiresEvery17msKeepsRealTime() {
+        // QTimer rounds 1/60 s to 17 ms: four steps a tick ran 0.98 of real time.
+        FramePacer pacer;
+        long long steps = 0;
+        for (int tick = 0; tick < 6000; ++tick) steps += pacer.stepsFor(0.017, kDt);
+        const long long due = std::llround(6000 * 0.017 / kDt);
+        QVERIFY2(steps >= due - 1 && steps <= due, qPrintable(QString::number(steps)));
+    }
+
+    void lateAndEarlyTicksAreEvenedOut() {
+        FramePacer pacer;
+        QCOMPARE(pacer.stepsFor(0.002, kDt), 0);  // early: nothing due yet
+        QCOMPARE(pacer.stepsFor(0.015, kDt), 4);  // 17 ms owed: 4 steps, 0.33 ms left
+        QCOMPARE(pacer.stepsFor(0.030, kDt), 7);  // late: 30.33 ms owed, 7 steps
+        QCOMPARE(pacer.stepsFor(0.0125, kDt), 3); // the 1.17 ms left and 12.5 ms
+    }
+
+    void jitterNeverLosesOrGainsTime() {
+        // Ticks 5-28 ms apart, 100 s of them: the steps match the time within one step.
+        FramePacer pacer;
+        double wall = 0.0;
+        long long steps = 0;
+        unsigned state = 12345;
+        for (int tick = 0; tick < 6000; ++tick) {
+            state = state * 1103515245u + 12345u;
+            const double gap = 0.005 + 0.023 * ((state >> 8) % 1000) / 999.0;
+            wall += gap;
+            steps += pacer.stepsFor(gap, kDt);
+        }
+        const double simulated = steps * kDt;
+        QVERIFY2(std::abs(simulated - wall) <= kDt,
+                 qPrintable(QStringLiteral("%1 s simulated in %2 s").arg(simulated).arg(wall)));
+    }
+
+    void aLongStallIsNotCaughtUpAllAtOnce() {
+        FramePacer pacer;
+        const int most = static_cast<int>(std::round(FramePacer::kCatchUpSeconds / kDt));
+        QCOMPARE(most, 8);
+        QCOMPARE(pacer.stepsFor(0.5, kDt), most);     // a dialog held the thread half a second
+        QCOMPARE(pacer.stepsFor(1.0 / 60.0, kDt), 4); // and the rest was dropped
+        // A machine that takes 25 ms for a frame's steps runs at most `most` a tick.
+        for (int tick = 0; tick < 100; ++tick) QVERIFY(pacer.stepsFor(0.025 * 2, kDt) <= most);
+    }
+
+    void aRestartForgetsWhatIsOwed() {
+        FramePacer pacer;
+        QCOMPARE(pacer.stepsFor(0.0035, kDt), 0); // 3.5 ms owed
+        pacer.restart();
+        QCOMPARE(pacer.stepsFor(0.001, kDt), 0);  // 1 ms, not 4.5 ms
+        QCOMPARE(pacer.stepsFor(0.0032, kDt), 1); // 4.2 ms
+    }
+
+    void aChangedStepKeepsTheTimeOwed() {
+        FramePacer pacer;
+        QCOMPARE(pacer.stepsFor(0.006, kDt), 1);         // 1.83 ms left
+        QCOMPARE(pacer.stepsFor(0.006, 1.0 / 960.0), 7); // 7.83 ms at 1.04 ms a step
+    }
+
+    void nothingRunsWithoutTimeOrAStep() {
+        FramePacer pacer;
+        QCOMPARE(pacer.stepsFor(0.0, kDt), 0);
+        QCOMPARE(pacer.stepsFor(-1.0, kDt), 0);
+        QCOMPARE(pacer.stepsFor(std::nan(""), kDt), 0);
+        QCOMPARE(pacer.stepsFor(0.1, 0.0), 0);
+        QCOMPARE(pacer.stepsFor(0.1, std::nan("")), 0);
+        QCOMPARE(pacer.stepsFor(1.0 / 60.0, kDt), 4); // and nothing was owed from those
+    }
+};
+
+QTEST_APPLESS_MAIN(TestFramePacer)
+#include "test_frame_pacer.moc"

@@ -1,0 +1,22 @@
+#include "FramePacer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pf {
+
+int FramePacer::stepsFor(double elapsed, double dt) {
+    if (!(dt > 0.0) || !(elapsed > 0.0)) return 0;
+    owed_ += elapsed;
+    // A tick of exactly n steps' time is n steps, not n − 1 and a rounding error.
+    const double due = std::floor(owed_ / dt + 1e-9);
+    const double most = std::max(1.0, std::round(kCatchUpSeconds / dt));
+    if (due > most) {
+        owed_ = 0.0;
+        return static_cast<int>(most);
+    }
+    owed_ = std::max(0.0, owed_ - due * dt);
+    return static_cast<int>(due);
+}
+
+} // namespace pf
