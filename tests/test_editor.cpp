@@ -15,6 +15,7 @@
 #include "SimulationThread.h"
 #include "SolverPanel.h"
 #include "TestShard.h"
+#include "UndoCommands.h"
 #include "Viewport.h"
 #include "ViewportInput.h"
 #include "WorkerPool.h"
@@ -530,6 +531,28 @@ class TestEditor : public QObject {
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("ファイル(&F)"));
         QVERIFY(installLanguage(QStringLiteral("en")));
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("&File"));
+    }
+
+    // The history names what a step did in plain English: "Pin 1 vertex", "Pin 3
+    // vertices" (the source text says "vertex(es)"; English's plural forms are a
+    // translation of their own), and so does a language without a translation.
+    void theHistorySpeaksPlainEnglish() {
+        using Kind = EditSession::StrokeKind;
+        const auto name = [](Kind kind, int events) {
+            return StrokeCommand(nullptr, 0, events, static_cast<int>(kind)).text();
+        };
+        QVERIFY(installLanguage(QStringLiteral("en")));
+        QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Pin 1 vertex"));
+        QCOMPARE(name(Kind::Pin, 3), QStringLiteral("Pin 3 vertices"));
+        QCOMPARE(name(Kind::Unpin, 1), QStringLiteral("Unpin 1 vertex"));
+        QCOMPARE(name(Kind::Push, 1), QStringLiteral("Push (1 break or fold)"));
+        QCOMPARE(name(Kind::Grab, 0), QStringLiteral("Grab (0 breaks or folds)"));
+        QCOMPARE(name(Kind::Fold, 12), QStringLiteral("Fold (12 breaks or folds)"));
+        QVERIFY(!installLanguage(QStringLiteral("fr")));
+        QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Pin 1 vertex"));
+        QVERIFY(installLanguage(QStringLiteral("de")));
+        QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Anheften (1 Knoten)"));
+        QVERIFY(installLanguage(QStringLiteral("en")));
     }
 
     // In every language each text the window shows is translated (differs from the

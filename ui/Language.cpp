@@ -18,15 +18,17 @@ bool installLanguage(const QString& code) {
     }
     const QLocale locale = code.isEmpty() ? QLocale::system() : QLocale(code);
     auto* t = new QTranslator;
-    if (!t->load(locale, QStringLiteral("paperfold"), QStringLiteral("_"),
-                 QStringLiteral(":/i18n"))) {
+    bool found =
+        t->load(locale, QStringLiteral("paperfold"), QStringLiteral("_"), QStringLiteral(":/i18n"));
+    // English is the source language; its translation holds only the plural forms, and
+    // is what a language without a translation (or the C locale) shows.
+    if (!found && !t->load(QStringLiteral("paperfold_en"), QStringLiteral(":/i18n"))) {
         delete t;
-        // English is the source language: no translator needed.
-        return code.isEmpty() || code == QLatin1String("en");
+        return false;
     }
     QCoreApplication::installTranslator(t);
     current = t;
-    return true;
+    return found || code.isEmpty() || code == QLatin1String("en");
 }
 
 QActionGroup* createLanguageActions(QObject* parent) {
