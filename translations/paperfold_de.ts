@@ -787,6 +787,10 @@
         <source>Breaks in the last second of simulated time: paper breaks while it is loaded further, and stops when the load stops</source>
         <translation>Brüche in der letzten simulierten Sekunde: Papier bricht, solange die Last weiter wächst, und hört auf, wenn sie aufhört</translation>
     </message>
+    <message>
+        <source>How many steps one simulated second takes (the step h = 1/N s). More steps are more accurate and cost more: the sheet moves in real time while the computer can take them that fast. The paper&apos;s behaviour is checked at 240 (&apos;paperfold fidelity&apos;).</source>
+        <translation>Wie viele Schritte eine simulierte Sekunde braucht (Schrittweite h = 1/N s). Mehr Schritte sind genauer und kosten mehr: Das Blatt bewegt sich in Echtzeit, solange der Rechner sie so schnell schafft. Das Verhalten des Papiers ist bei 240 geprüft (&apos;paperfold fidelity&apos;).</translation>
+    </message>
 </context>
 <context>
     <name>pf::StatusReadout</name>

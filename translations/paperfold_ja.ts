@@ -780,6 +780,10 @@
         <source>Breaks in the last second of simulated time: paper breaks while it is loaded further, and stops when the load stops</source>
         <translation>シミュレーション時間の直近 1 秒間の破断数: 紙は荷重が増え続ける間に破断し、荷重が止まると破断も止まります</translation>
     </message>
+    <message>
+        <source>How many steps one simulated second takes (the step h = 1/N s). More steps are more accurate and cost more: the sheet moves in real time while the computer can take them that fast. The paper&apos;s behaviour is checked at 240 (&apos;paperfold fidelity&apos;).</source>
+        <translation>シミュレーション1秒あたりのステップ数（ステップ幅 h = 1/N 秒）。ステップを増やすと精度は上がり、計算量も増えます。コンピュータがその速さで計算できる間は、紙は実時間で動きます。紙のふるまいは 240 で検証されています（&apos;paperfold fidelity&apos;）。</translation>
+    </message>
 </context>
 <context>
     <name>pf::StatusReadout</name>

@@ -780,6 +780,10 @@
         <source>Breaks in the last second of simulated time: paper breaks while it is loaded further, and stops when the load stops</source>
         <translation>시뮬레이션 시간 최근 1초 동안의 파단 수: 종이는 하중이 더 커지는 동안 파단되고, 하중이 멈추면 파단도 멈춥니다</translation>
     </message>
+    <message>
+        <source>How many steps one simulated second takes (the step h = 1/N s). More steps are more accurate and cost more: the sheet moves in real time while the computer can take them that fast. The paper&apos;s behaviour is checked at 240 (&apos;paperfold fidelity&apos;).</source>
+        <translation>시뮬레이션 1초당 스텝 수(스텝 크기 h = 1/N 초). 스텝이 많을수록 정확하지만 계산이 더 듭니다. 컴퓨터가 그 속도로 계산할 수 있는 동안 종이는 실시간으로 움직입니다. 종이의 거동은 240에서 검증되었습니다(&apos;paperfold fidelity&apos;).</translation>
+    </message>
 </context>
 <context>
     <name>pf::StatusReadout</name>

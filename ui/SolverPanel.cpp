@@ -146,6 +146,11 @@ void SolverPanel::retranslate() {
                              "card 250 g/m²."));
     iterationsLabel_->setText(tr("Jacobi sweeps"));
     dtLabel_->setText(tr("Steps per second"));
+    stepsPerSecond_->setToolTip(
+        tr("How many steps one simulated second takes (the step h = 1/N s). More steps are "
+           "more accurate and cost more: the sheet moves in real time while the computer "
+           "can take them that fast. The paper's behaviour is checked at 240 ('paperfold "
+           "fidelity')."));
     gravityOutside_->setText(tr("Gravity outside the implicit filter"));
     gravityOutside_->setToolTip(tr("Start the Jacobi iteration at Δv = h·g. The paper's step "
                                    "divides gravity by W, so a hanging sheet falls at a fraction "
