@@ -548,6 +548,12 @@ class TestEditor : public QObject {
         QCOMPARE(name(Kind::Push, 1), QStringLiteral("Push (1 break or fold)"));
         QCOMPARE(name(Kind::Grab, 0), QStringLiteral("Grab (0 breaks or folds)"));
         QCOMPARE(name(Kind::Fold, 12), QStringLiteral("Fold (12 breaks or folds)"));
+        // The status bar's counts too.
+        const auto status = [](const char* source, int n) {
+            return QCoreApplication::translate("pf::StatusReadout", source, nullptr, n);
+        };
+        QCOMPARE(status("%n break(s)", 1), QStringLiteral("1 break"));
+        QCOMPARE(status("%n hinge(s)", 2), QStringLiteral("2 hinges"));
         QVERIFY(!installLanguage(QStringLiteral("fr")));
         QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Pin 1 vertex"));
         QVERIFY(installLanguage(QStringLiteral("de")));

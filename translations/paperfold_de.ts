@@ -803,8 +803,22 @@
         <translation>Schritt %1 µs</translation>
     </message>
     <message>
-        <source>%1 vertices · %2 springs · %3 breaks (%4/s) · %5 hinges</source>
-        <translation>%1 Knoten · %2 Federn · %3 Brüche (%4/s) · %5 Scharniere</translation>
+        <source>%1 vertices · %2 springs · %3 (%4/s) · %5</source>
+        <translation>%1 Knoten · %2 Federn · %3 (%4/s) · %5</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n break(s)</source>
+        <translation>
+            <numerusform>%n Bruch</numerusform>
+            <numerusform>%n Brüche</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n hinge(s)</source>
+        <translation>
+            <numerusform>%n Scharnier</numerusform>
+            <numerusform>%n Scharniere</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -44,7 +44,7 @@
     </message>
 </context>
 <context>
-    <name>SolverPanel</name>
+    <name>pf::SolverPanel</name>
     <message numerus="yes">
         <source>%n per second</source>
         <translation>
@@ -57,6 +57,23 @@
         <translation>
             <numerusform>How many of this computer&apos;s %n core steps the sheet. The sheet moves the same, to the last bit, on any number.</numerusform>
             <numerusform>How many of this computer&apos;s %n cores step the sheet. The sheet moves the same, to the last bit, on any number; by default one core is left to draw the view.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>pf::StatusReadout</name>
+    <message numerus="yes">
+        <source>%n break(s)</source>
+        <translation>
+            <numerusform>%n break</numerusform>
+            <numerusform>%n breaks</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n hinge(s)</source>
+        <translation>
+            <numerusform>%n hinge</numerusform>
+            <numerusform>%n hinges</numerusform>
         </translation>
     </message>
 </context>

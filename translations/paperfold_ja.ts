@@ -796,8 +796,20 @@
         <translation>ステップ %1 µs</translation>
     </message>
     <message>
-        <source>%1 vertices · %2 springs · %3 breaks (%4/s) · %5 hinges</source>
-        <translation>頂点 %1 · ばね %2 · 破断 %3 (%4/秒) · ヒンジ %5</translation>
+        <source>%1 vertices · %2 springs · %3 (%4/s) · %5</source>
+        <translation>頂点 %1 · ばね %2 · %3 (%4/秒) · %5</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n break(s)</source>
+        <translation>
+            <numerusform>破断 %n</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n hinge(s)</source>
+        <translation>
+            <numerusform>ヒンジ %n</numerusform>
+        </translation>
     </message>
 </context>
 <context>

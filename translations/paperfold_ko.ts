@@ -796,8 +796,20 @@
         <translation>단계 %1 µs</translation>
     </message>
     <message>
-        <source>%1 vertices · %2 springs · %3 breaks (%4/s) · %5 hinges</source>
-        <translation>정점 %1 · 스프링 %2 · 파단 %3 (%4/초) · 힌지 %5</translation>
+        <source>%1 vertices · %2 springs · %3 (%4/s) · %5</source>
+        <translation>정점 %1 · 스프링 %2 · %3 (%4/초) · %5</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n break(s)</source>
+        <translation>
+            <numerusform>파단 %n</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n hinge(s)</source>
+        <translation>
+            <numerusform>힌지 %n</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -21,12 +21,13 @@ void StatusReadout::show(const SimulationStatus& st) {
     }
     fps_->setText(tr("%1 fps").arg(fpsValue_, 0, 'f', 0));
     step_->setText(tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0));
-    counts_->setText(tr("%1 vertices · %2 springs · %3 breaks (%4/s) · %5 hinges")
+    // The counts that can be one are said with their plural forms ("1 break", "2 breaks").
+    counts_->setText(tr("%1 vertices · %2 springs · %3 (%4/s) · %5")
                          .arg(st.vertices)
                          .arg(st.springs)
-                         .arg(st.breaks)
+                         .arg(tr("%n break(s)", nullptr, st.breaks))
                          .arg(st.breaksLastSecond)
-                         .arg(st.hinges));
+                         .arg(tr("%n hinge(s)", nullptr, st.hinges)));
 }
 
 } // namespace pf
