@@ -865,7 +865,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         // nearest pinned vertex than the paper between them allows, so a hanging sheet
         // holds its length without the pull walking one edge per pass from the pins.
         for (const Tether& t : tethers_) {
-            if (w_[t.vertex] == 0.0) continue; // pinned, not held: it follows its script
+            if (w_[t.vertex] == 0.0) continue; // the sub-steps do not move it (pinned, not held)
             const Vec3 d = V.x[t.vertex] - V.x[t.pin];
             const double len = d.norm();
             if (len > t.length) V.x[t.vertex] = V.x[t.pin] + d * (t.length / len);

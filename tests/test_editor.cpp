@@ -14,6 +14,7 @@
 #include "SheetStats.h"
 #include "SimulationThread.h"
 #include "SolverPanel.h"
+#include "StatusReadout.h"
 #include "TestShard.h"
 #include "UndoCommands.h"
 #include "Viewport.h"
@@ -549,11 +550,19 @@ class TestEditor : public QObject {
         QCOMPARE(name(Kind::Grab, 0), QStringLiteral("Grab (0 breaks or folds)"));
         QCOMPARE(name(Kind::Fold, 12), QStringLiteral("Fold (12 breaks or folds)"));
         // The status bar's counts too.
-        const auto status = [](const char* source, int n) {
-            return QCoreApplication::translate("pf::StatusReadout", source, nullptr, n);
-        };
-        QCOMPARE(status("%n break(s)", 1), QStringLiteral("1 break"));
-        QCOMPARE(status("%n hinge(s)", 2), QStringLiteral("2 hinges"));
+        QStatusBar bar;
+        StatusReadout readout(&bar);
+        SimulationStatus st;
+        st.vertices = 494;
+        st.springs = 2700;
+        st.breaks = st.breaksLastSecond = 1;
+        st.hinges = 2;
+        readout.show(st);
+        QStringList shown;
+        for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
+        QVERIFY2(shown.contains(
+                     QStringLiteral("494 vertices · 2700 springs · 1 break (1/s) · 2 hinges")),
+                 qPrintable(shown.join(QStringLiteral(" | "))));
         QVERIFY(!installLanguage(QStringLiteral("fr")));
         QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Pin 1 vertex"));
         QVERIFY(installLanguage(QStringLiteral("de")));

@@ -4,7 +4,8 @@
 <!-- English is the source language: this file holds only its plural forms (Qt's
      numerus messages, "(s)" in the source), which the editor loads when no other
      language is chosen. Regenerate its entries with
-     lupdate -pluralonly ui render -ts translations/paperfold_en.ts (README.md). -->
+     lupdate -pluralonly -locations none -no-obsolete ui render -ts translations/paperfold_en.ts
+     (README.md; it drops this comment). -->
 <context>
     <name>UndoCommands</name>
     <message numerus="yes">

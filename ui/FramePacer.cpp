@@ -5,8 +5,12 @@
 
 namespace pf {
 
-int FramePacer::stepsFor(double elapsed, double dt) {
+int FramePacer::stepsFor(double elapsed, double dt, double stepCost) {
     if (!(dt > 0.0) || !(elapsed > 0.0)) return 0;
+    if (stepCost > dt) {
+        owed_ = 0.0;
+        return static_cast<int>(std::max(1.0, std::round(kFrameSeconds / dt)));
+    }
     owed_ += elapsed;
     // A tick of exactly n steps' time is n steps, not n − 1 and a rounding error.
     const double due = std::floor(owed_ / dt + 1e-9);

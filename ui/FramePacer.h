@@ -3,19 +3,23 @@
 namespace pf {
 
 // How many steps of dt the editor runs at a tick of its frame timer, so that the
-// simulated time keeps up with the wall clock. A fixed count per tick lost time whenever
-// a tick came late (the view and Xvfb share the machine's two cores) and at every tick,
-// since a 1/60 s timer fires every 17 ms: the editor ran at 0.86-0.95 of real time with
-// the sheet asleep and the step costing 19 µs. What a tick leaves over (less than a
-// step) is owed to the next one. Late ticks are caught up to kCatchUpSeconds of steps
-// at once; beyond that the debt is dropped: a machine that cannot step in real time
-// would only run more steps per tick, and show fewer frames, at the same pace.
+// simulated time keeps up with the wall clock. A fixed four steps a tick lost time at
+// every tick (a 1/60 s timer fires every 17 ms) and at every late one (the view and Xvfb
+// share the machine's two cores): the editor ran at 0.98 of real time with the sheet at
+// rest and the step costing 17 µs. Now a tick runs the steps due since the last one, and
+// what it leaves over (less than a step) is owed to the next. A late tick is caught up
+// to kCatchUpSeconds of steps at once, the rest dropped. A machine whose steps take
+// longer than their dt cannot keep real time at all: catching up would only run more
+// steps a tick and show fewer frames at the same pace, so it runs a frame's steps a
+// tick, as before.
 class FramePacer {
   public:
-    static constexpr double kCatchUpSeconds = 2.0 / 60.0;
+    static constexpr double kFrameSeconds = 1.0 / 60.0;
+    static constexpr double kCatchUpSeconds = 2.0 * kFrameSeconds;
 
-    // The steps to run at a tick `elapsed` seconds after the last one.
-    int stepsFor(double elapsed, double dt);
+    // The steps to run at a tick `elapsed` seconds after the last one, when a step has
+    // lately taken `stepCost` seconds of wall time (0: not known).
+    int stepsFor(double elapsed, double dt, double stepCost = 0.0);
     // Forgets what is owed: after a pause the sheet goes on from now, not from then.
     void restart() { owed_ = 0.0; }
 

@@ -130,12 +130,16 @@ void SimulationWorker::frame() {
     }
     const double elapsed = sinceTick_.isValid() ? sinceTick_.nsecsElapsed() * 1e-9 : kFrameSeconds;
     sinceTick_.start();
-    const int steps = pacer_.stepsFor(elapsed, session_.world().params.dt);
+    const int steps = pacer_.stepsFor(elapsed, session_.world().params.dt, stepCost_);
     if (steps == 0) return; // an early tick: the next one runs its steps
     QElapsedTimer t;
     t.start();
     advance(steps);
-    publish(t.nsecsElapsed() * 1e-9 / steps);
+    const double cost = t.nsecsElapsed() * 1e-9 / steps;
+    // Averaged over the last few ticks, so that one slow tick (a break's new mesh, the
+    // view taking the core) does not stop the catching up.
+    stepCost_ = stepCost_ > 0.0 ? 0.8 * stepCost_ + 0.2 * cost : cost;
+    publish(cost);
 }
 
 void SimulationWorker::publish(double stepSeconds) {

@@ -24,7 +24,7 @@ class SimulationWorker : public QObject {
     SimulationWorker(World world, SimulationChannel& channel);
     ~SimulationWorker() override;
 
-    static constexpr double kFrameSeconds = 1.0 / 60.0;
+    static constexpr double kFrameSeconds = FramePacer::kFrameSeconds;
 
     void start();
     void setPlaying(bool playing);
@@ -66,7 +66,8 @@ class SimulationWorker : public QObject {
     SimulationChannel& channel_;
     QTimer timer_;
     FramePacer pacer_;
-    QElapsedTimer sinceTick_; // invalid while paused: the first tick of play is one frame
+    QElapsedTimer sinceTick_; // reset by a tick while paused: the first tick of play is a frame
+    double stepCost_ = 0.0;   // wall seconds a step has taken lately (FramePacer)
     bool playing_ = true;
 };
 
