@@ -7,14 +7,15 @@ namespace pf {
 
 int FramePacer::stepsFor(double elapsed, double dt, double stepCost) {
     if (!(dt > 0.0) || !(elapsed > 0.0)) return 0;
+    const auto stepsIn = [dt](double seconds) { return std::max(1.0, std::round(seconds / dt)); };
     if (stepCost > dt) {
         owed_ = 0.0;
-        return static_cast<int>(std::max(1.0, std::round(kFrameSeconds / dt)));
+        return static_cast<int>(stepsIn(kFrameSeconds));
     }
     owed_ += elapsed;
     // A tick of exactly n steps' time is n steps, not n − 1 and a rounding error.
     const double due = std::floor(owed_ / dt + 1e-9);
-    const double most = std::max(1.0, std::round(kCatchUpSeconds / dt));
+    const double most = stepsIn(kCatchUpSeconds);
     if (due > most) {
         owed_ = 0.0;
         return static_cast<int>(most);

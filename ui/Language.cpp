@@ -18,7 +18,7 @@ bool installLanguage(const QString& code) {
     }
     const QLocale locale = code.isEmpty() ? QLocale::system() : QLocale(code);
     auto* t = new QTranslator;
-    bool found =
+    const bool found =
         t->load(locale, QStringLiteral("paperfold"), QStringLiteral("_"), QStringLiteral(":/i18n"));
     // English is the source language; its translation holds only the plural forms, and
     // is what a language without a translation (or the C locale) shows.
