@@ -482,7 +482,10 @@ void XpbdIntegrator::bendImplicitly(Sheet& sheet, const Vec3& g, double h) {
 void XpbdIntegrator::projectStretch(Sheet& sheet, double dt) {
     auto& V = sheet.verts;
     const Index nv = V.size();
-    for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
+    bool held = contacts_.hand >= 0;
+    for (Index i = 0; i < nv && !held; ++i) held = V.pinned[i] != 0;
+    const int iterations = held ? kHeldProjectionIterations : kProjectionIterations;
+    for (int iteration = 0; iteration < iterations; ++iteration) {
         active_.clear();
         for (std::size_t q = 0; q < stretch_.size(); ++q) {
             const StretchConstraint& k = stretch_[q];

@@ -548,10 +548,10 @@ class TestEditSession : public QObject {
                                     .arg(rise)
                                     .arg(across)));
         }
-        // What holds today, short of issue 9's 1 %: the four-pinned tent peaks at 4.7 %
-        // stretch and keeps 1.2 %, with a few breaks (docs/material.md, "What is open").
-        QVERIFY2(worstStretch <= (pins == 4 ? 0.06 : 0.025),
-                 qPrintable(QString::number(worstStretch)));
+        // Issue 9's bound, while the hand pulls against the pins: the projection iterates
+        // until the stretch is down to 0.3 % where pins hold the paper (four iterations left
+        // the four-pinned tent 4.7 % stretched; docs/material.md).
+        QVERIFY2(worstStretch <= 0.01, qPrintable(QString::number(worstStretch)));
         QVERIFY(after.breaks <= breaksBefore + 10);
     }
 

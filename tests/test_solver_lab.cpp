@@ -161,15 +161,18 @@ class TestSolverLab : public QObject {
         // shorter) before the sheet can arch out of their way, at every stiffness.
         QVERIFY(!stable("compress", "xpbd", 0, true, 1.0 / 30, 100.0));
         QVERIFY(!stable("compress", "xpbd", 0, true, 1.0 / 30, 10000.0));
-        // Softer than any paper (E·t = 100 N/m with office paper's D) the fast projection,
-        // which pulls every stretched edge back to its rest length, pumps energy into the
-        // sheet at small steps (without the projection it does not: docs/solver-lab.md).
+        // Softer than any paper (E·t = 100 N/m with office paper's D) `compress` is crushed
+        // at small steps too. Its fast projection pumped energy into it there (131 J at
+        // 1/1920 s) while it stopped after four Newton iterations; iterating to the bound,
+        // as it does where pins hold the paper, it is crushed instead (docs/solver-lab.md).
         StabilityCase soft;
         soft.scene = "compress";
         soft.integrator = "xpbd";
         soft.dt = 1.0 / 1920;
         soft.stiffnessScale = 1.0;
-        QCOMPARE(probeStability(soft).outcome, StabilityOutcome::EnergyBlowup);
+        const StabilityResult crushed = probeStability(soft);
+        QCOMPARE(crushed.outcome, StabilityOutcome::Overstrained);
+        QVERIFY2(crushed.peakKinetic < 1.0, qPrintable(QString::number(crushed.peakKinetic)));
     }
 
     void exactBackwardEulerNeverFails() {
