@@ -36,12 +36,13 @@ inline constexpr int kSubstepsPerBendingSolve = 4;
 // sub-steps may leave before it runs, and its compliance relative to the constraints'
 // inverse masses (a triangle mesh held by pins has more edges than free directions).
 inline constexpr int kProjectionIterations = 4;
-// Where pins or a hand hold the paper, up to this many: the tension between them is set by
-// where they hold it, not by the paper's weight, and the sub-steps leave much of it (a
-// sheet pinned at its four corners and lifted by its middle: 3-9 % stretch after them,
-// every step). Four iterations left that tent 4.7 % stretched; it takes 7-14 to reach
-// kProjectedStretch. A free sheet keeps four: a folded sheet that the projection does not
-// settle would pay for all sixteen in every step.
+// Where pins, a hand or the tool's grip hold the paper, up to this many: the tension
+// between them is set by where they hold it, not by the paper's weight, and the sub-steps
+// leave much of it (a sheet pinned at its four corners and lifted by its middle: 3-9 %
+// stretch after them, every step; `press` at resolution 40, 2.9 % under the tool). Four
+// iterations left that tent 4.7 % stretched; it takes 7-14 to reach kProjectedStretch. A
+// free sheet keeps four: a folded sheet that the projection does not settle would pay for
+// all sixteen in every step.
 inline constexpr int kHeldProjectionIterations = 16;
 // A Newton step of the projection that multiplies the worst stretch by more than this
 // diverges: it is halved, up to kProjectionHalvings times before the projection stops.
