@@ -483,7 +483,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt) {
     auto& V = sheet.verts;
     const Index nv = V.size();
     // The tool grips the paper it presses onto the desk (pullWithTool) as a hand does.
-    bool held = contacts_.hand >= 0 || !sheet.paper.grips.empty();
+    bool held = !sheet.paper.grips.empty();
     for (Index i = 0; i < nv && !held; ++i) held = V.pinned[i] != 0;
     const int iterations = held ? kHeldProjectionIterations : kProjectionIterations;
     for (int iteration = 0; iteration < iterations; ++iteration) {

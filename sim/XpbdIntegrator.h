@@ -36,20 +36,20 @@ inline constexpr int kSubstepsPerBendingSolve = 4;
 // sub-steps may leave before it runs, and its compliance relative to the constraints'
 // inverse masses (a triangle mesh held by pins has more edges than free directions).
 inline constexpr int kProjectionIterations = 4;
-// Where pins, a hand or the tool's grip hold the paper, up to this many: the tension
-// between them is set by where they hold it, not by the paper's weight, and the sub-steps
-// leave much of it (a sheet pinned at its four corners and lifted by its middle: 3-9 %
-// stretch after them, every step; `press` at resolution 40, 2.9 % under the tool). Four
-// iterations left that tent 4.7 % stretched; it takes 7-14 to reach kProjectedStretch. A
-// free sheet keeps four: a folded sheet that the projection does not settle would pay for
-// all sixteen in every step.
-inline constexpr int kHeldProjectionIterations = 16;
 // A Newton step of the projection that multiplies the worst stretch by more than this
 // diverges: it is halved, up to kProjectionHalvings times before the projection stops.
 inline constexpr double kProjectionDivergence = 2.0;
 inline constexpr int kProjectionHalvings = 4;
 inline constexpr double kProjectedStretch = 3e-3;
 inline constexpr double kProjectionCompliance = 1e-3;
+// Newton iterations of the projection where pins (a hand holds its vertex as a pin) or
+// the tool's grip hold the paper: the tension between them is set by where they hold it,
+// not by the paper's weight, and the sub-steps leave much of it (a sheet pinned at its
+// four corners and lifted by its middle: 3-9 % stretch after them, every step; `press`
+// at resolution 40, 2.9 % under the tool). Four iterations left that tent 4.7 %
+// stretched; it takes 7-14 to reach kProjectedStretch. A free sheet keeps four: a folded
+// sheet that the projection does not settle would pay for all sixteen in every step.
+inline constexpr int kHeldProjectionIterations = 16;
 // An edge shorter than its rest length by more than this has buckled (the sub-steps
 // cap its push at the buckling load) and is left out of the projection; every other
 // edge is held at its rest length, as paper below its buckling load is.

@@ -138,14 +138,19 @@ class TestPaperBehaviour : public QObject {
     void aFinerSheetStaysWithinTheStretchBound_data() {
         QTest::addColumn<QString>("scene");
         QTest::addColumn<int>("resolution");
-        // Where the sub-steps left the most stretch, before the projection iterated to the
-        // bound where pins and the tool hold the paper: 2.86 % (press) and 1.03 % (drape).
-        QTest::newRow("press, resolution 40, under the tool") << QStringLiteral("press") << 40;
-        QTest::newRow("drape, resolution 30, from two pins") << QStringLiteral("drape") << 30;
+        QTest::addColumn<double>("bound");
+        // Before the projection iterated to 0.3 % where pins and the tool hold the paper,
+        // these peaked at 2.86 % and 1.03 %; now 0.46 % and 0.30 %. drape's bound is half
+        // issue 9's 1 %, so that falling back fails it by more than a rounding.
+        QTest::newRow("press, resolution 40, under the tool")
+            << QStringLiteral("press") << 40 << 0.01;
+        QTest::newRow("drape, resolution 30, from two pins")
+            << QStringLiteral("drape") << 30 << 0.005;
     }
     void aFinerSheetStaysWithinTheStretchBound() {
         QFETCH(QString, scene);
         QFETCH(int, resolution);
+        QFETCH(double, bound);
         SceneOptions finer;
         finer.resolution = resolution;
         World w = *makeScene(scene.toStdString(), finer);
@@ -160,7 +165,7 @@ class TestPaperBehaviour : public QObject {
         }
         qInfo("%ld vertices: largest stretch %.3f %%, largest RMS %.4f %%",
               static_cast<long>(sim.world().sheet.verts.size()), 100 * worst, 100 * worstRms);
-        QVERIFY2(worst <= 0.01, qPrintable(QString::number(worst)));
+        QVERIFY2(worst <= bound, qPrintable(QString::number(worst)));
         QVERIFY2(worstRms <= 0.001, qPrintable(QString::number(worstRms)));
     }
 
