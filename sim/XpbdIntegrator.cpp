@@ -479,13 +479,9 @@ void XpbdIntegrator::bendImplicitly(Sheet& sheet, const Vec3& g, double h) {
 // One sparse solve reaches across the sheet, where a Gauss-Seidel pass moves a pull
 // one edge: near a clamp or under the tool's grip the sub-steps alone left 1-3 %
 // stretch. Compressed edges are left to the buckling cap of the sub-steps.
-void XpbdIntegrator::projectStretch(Sheet& sheet, double dt) {
+void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations) {
     auto& V = sheet.verts;
     const Index nv = V.size();
-    // The tool grips the paper it presses onto the desk (pullWithTool) as a hand does.
-    bool held = !sheet.paper.grips.empty();
-    for (Index i = 0; i < nv && !held; ++i) held = V.pinned[i] != 0;
-    const int iterations = held ? kHeldProjectionIterations : kProjectionIterations;
     for (int iteration = 0; iteration < iterations; ++iteration) {
         active_.clear();
         for (std::size_t q = 0; q < stretch_.size(); ++q) {
@@ -882,7 +878,10 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             if (w_[i] != 0.0) V.v[i] = (V.x[i] - xPrev_[i]) / h;
     }
 
-    projectStretch(sheet, params.dt);
+    // The tool grips the paper it presses onto the desk (pullWithTool) as a hand does,
+    // and the vertex a hand holds is among the pins.
+    const bool held = pins > 0 || !grips.empty();
+    projectStretch(sheet, params.dt, held ? kHeldProjectionIterations : kProjectionIterations);
     collideSphere(sp.center, sp.center, false);
     collideGround(false);
 
