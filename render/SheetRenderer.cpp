@@ -422,7 +422,7 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
         gl.Disable(GL_BLEND);
     }
 
-    if (options.sphere && snap.sphere.active) {
+    if (options.sphere && (snap.sphere.active || snap.sphere.hovering)) {
         const SphereTool& sp = snap.sphere;
         Mat4 model = Mat4::Identity();
         model.block<3, 3>(0, 0) *= sp.radius;

@@ -10,7 +10,12 @@ struct SphereTool {
     Vec3 center{0.0, 1.0, 0.0};
     Vec3 velocity = Vec3::Zero();
     double radius = 0.03;
-    bool active = false;
+    bool active = false; // it touches the paper
+    // Shown where the cursor is while no button is pressed, touching nothing: the
+    // editor's tool before and between strokes. A hovering sphere that touched the paper
+    // swept through it whenever the cursor crossed a fold or a crumpled sheet (a user's
+    // three zigzags over tissue, no button pressed: 728 breaks, and nothing to undo).
+    bool hovering = false;
 };
 
 // Vertices inside the sphere are moved to its surface and lose their inward velocity

@@ -128,6 +128,7 @@ void EditSession::replaceWorld(const World& world) {
     sim_.world().script.sphereKeys.clear();
     sim_.world().sphere.radius = tool.radius;
     sim_.world().sphere.active = tool.active;
+    sim_.world().sphere.hovering = tool.hovering;
     grabbed_ = kNone; // a vertex of the old sheet (the new Simulation holds none)
     strokes_.clear();
     sheet_ = 0;
@@ -166,9 +167,12 @@ std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, d
     SphereTool& sphere = sim_.world().sphere;
     toolTarget_ = target;
     sphere.radius = radius;
-    if (visible && !sphere.active) sphere.center = target; // appears where the cursor is
-    sphere.active = visible;
+    // It appears where the cursor is; a hovering sphere pressed goes down from where it
+    // hovers.
+    if (visible && !sphere.active && !sphere.hovering) sphere.center = target;
     if (grabbing() || folding()) pressed = false; // one stroke at a time
+    sphere.active = visible && pressed;
+    sphere.hovering = visible && !pressed;
     if (pressed && !pressed_) beginStroke();
     const bool released = pressed_ && !pressed;
     pressed_ = pressed;

@@ -499,6 +499,9 @@ World worldFromCbor(const QCborMap& root) {
         fail(QStringLiteral("sphere: non-finite position or velocity"));
     world.sphere.radius = realAt(sphere, "radius", ws, 1e-6, 100.0);
     world.sphere.active = boolAt(sphere, "active", ws);
+    // Files from before the editor's tool hovered have no such key.
+    if (sphere.contains(QLatin1String("hovering")))
+        world.sphere.hovering = boolAt(sphere, "hovering", ws);
 
     const QCborMap ground = mapAt(root, "ground", w);
     world.groundEnabled = boolAt(ground, "enabled", QStringLiteral("ground"));
@@ -623,6 +626,7 @@ const CborBounds& sheetFileBounds() {
                                 "velocity",
                                 "radius",
                                 "active",
+                                "hovering",
                                 "ground",
                                 "enabled",
                                 "height",
@@ -699,6 +703,7 @@ QByteArray encodeWorld(const World& world) {
     sphere[QLatin1String("velocity")] = velocity;
     sphere[QLatin1String("radius")] = world.sphere.radius;
     sphere[QLatin1String("active")] = world.sphere.active;
+    sphere[QLatin1String("hovering")] = world.sphere.hovering;
     root[QLatin1String("sphere")] = sphere;
 
     QCborMap ground;

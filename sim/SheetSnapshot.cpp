@@ -12,6 +12,7 @@ bool drawsTheSame(const SheetSnapshot& a, const SheetSnapshot& b) {
            a.recentlyBroken == b.recentlyBroken && a.vertexStrain == b.vertexStrain &&
            a.pinned == b.pinned && a.sphere.center == b.sphere.center &&
            a.sphere.radius == b.sphere.radius && a.sphere.active == b.sphere.active &&
+           a.sphere.hovering == b.sphere.hovering &&
            a.groundEnabled == b.groundEnabled && a.groundHeight == b.groundHeight;
 }
 

@@ -143,6 +143,62 @@ class TestEditSession : public QObject {
         QCOMPARE(session.world().stepCount, step);
     }
 
+    void aHoveringToolTouchesNothing() {
+        // A user moved the mouse over the sheet in three zigzags with no button pressed
+        // (tissue, the tool at 4.4 cm): the sphere, touching the paper where the cursor
+        // met it and sweeping through it between targets, broke it 728 times and threw
+        // it off the view, with nothing to undo. Hovering shows the tool and leaves the
+        // paper alone; pressed, the same tool pushes it.
+        World w = makeEditorScene("press", SceneOptions{}, 0.044);
+        QVERIFY(materialPreset("tissue", w.params.material));
+        EditSession session(w);
+        QCOMPARE(session.advance(120), StepStatus::Ok); // settled on the desk
+        const Sheet before = session.world().sheet;
+        const double radius = 0.044;
+        const int stepsPerFrame =
+            std::max(1, int(std::lround((1.0 / 60.0) / session.world().params.dt)));
+        // Where the cursor's ray meets the flat sheet, the tool's centre is one radius
+        // above it (render/Picking: toolCenter with no depth).
+        for (int zig = 0; zig < 3; ++zig)
+            for (int i = 0; i <= 25; ++i) {
+                const double x = -0.1 + 0.2 * i / 25.0 * (zig % 2 == 0 ? 1.0 : -1.0) +
+                                 (zig % 2 == 0 ? 0.0 : 0.2);
+                const double z = -0.12 + 0.12 * zig + 0.004 * i;
+                session.setTool(Vec3(x, radius, z), radius, true, false);
+                QCOMPARE(session.advance(stepsPerFrame), StepStatus::Ok);
+                QVERIFY(session.world().sphere.hovering);
+                QVERIFY(!session.world().sphere.active);
+            }
+        const Sheet& after = session.world().sheet;
+        QCOMPARE(topology(after), topology(before));
+        double moved = 0.0;
+        for (Index i = 0; i < after.verts.size(); ++i)
+            moved = std::max(moved, (after.verts.x[i] - before.verts.x[i]).norm());
+        qInfo("hovered 78 frames: the paper moved %.2e m at most", moved);
+        QVERIFY2(moved < 1e-6, qPrintable(QStringLiteral("moved %1 m").arg(moved)));
+        QVERIFY(!session.undoStroke(0).has_value()); // nothing was done
+
+        // The button pressed where the tool hovers: it goes down from there and pushes.
+        const Vec3 at(0.0, radius, 0.0);
+        session.setTool(at, radius, true, false);
+        QCOMPARE(session.advance(60), StepStatus::Ok);
+        const Vec3 hovered = session.world().sphere.center;
+        const Vec3 pressed = at - Vec3(0.0, 0.6 * radius, 0.0);
+        session.setTool(pressed, radius, true, true);
+        QVERIFY(session.world().sphere.active);
+        QCOMPARE(session.world().sphere.center, hovered); // no jump into the paper
+        for (int frame = 0; frame < 15; ++frame) {
+            session.setTool(pressed + Vec3(0.004 * frame, 0.0, 0.0), radius, true, true);
+            QCOMPARE(session.advance(stepsPerFrame), StepStatus::Ok);
+        }
+        const auto end = session.setTool(pressed + Vec3(0.06, 0.0, 0.0), radius, true, false);
+        QVERIFY(end.has_value()); // the push changed the sheet: one undo step
+        double pushed = 0.0;
+        for (Index i = 0; i < before.verts.size(); ++i)
+            pushed = std::max(pushed, (session.world().sheet.verts.x[i] - before.verts.x[i]).norm());
+        QVERIFY2(pushed > 1e-3, qPrintable(QStringLiteral("pushed %1 m").arg(pushed)));
+    }
+
     void aStrokeThatChangedNothingHasNothingToUndo() {
         // The button held with the tool 10 cm above the sheet: nothing to give back.
         EditSession session(test::machineryScene("press"));
@@ -845,7 +901,9 @@ class TestEditSession : public QObject {
         session.replaceWorld(test::machineryScene("drape"));
         QVERIFY(!session.undoStroke(0).has_value());
         QCOMPARE(session.world().sphere.radius, radius);
-        QVERIFY(session.world().sphere.active);
+        // Shown where the cursor is, not pressed into the paper.
+        QVERIFY(session.world().sphere.hovering);
+        QVERIFY(!session.world().sphere.active);
         QVERIFY(session.world().script.sphereKeys.empty());
     }
 
