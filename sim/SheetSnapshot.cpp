@@ -12,8 +12,8 @@ bool drawsTheSame(const SheetSnapshot& a, const SheetSnapshot& b) {
            a.recentlyBroken == b.recentlyBroken && a.vertexStrain == b.vertexStrain &&
            a.pinned == b.pinned && a.sphere.center == b.sphere.center &&
            a.sphere.radius == b.sphere.radius && a.sphere.active == b.sphere.active &&
-           a.sphere.hovering == b.sphere.hovering &&
-           a.groundEnabled == b.groundEnabled && a.groundHeight == b.groundHeight;
+           a.sphere.hovering == b.sphere.hovering && a.groundEnabled == b.groundEnabled &&
+           a.groundHeight == b.groundHeight;
 }
 
 SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds) {

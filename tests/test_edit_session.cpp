@@ -195,7 +195,8 @@ class TestEditSession : public QObject {
         QVERIFY(end.has_value()); // the push changed the sheet: one undo step
         double pushed = 0.0;
         for (Index i = 0; i < before.verts.size(); ++i)
-            pushed = std::max(pushed, (session.world().sheet.verts.x[i] - before.verts.x[i]).norm());
+            pushed =
+                std::max(pushed, (session.world().sheet.verts.x[i] - before.verts.x[i]).norm());
         QVERIFY2(pushed > 1e-3, qPrintable(QStringLiteral("pushed %1 m").arg(pushed)));
     }
 
