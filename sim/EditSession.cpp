@@ -469,6 +469,12 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     }
     if (st.sheet != sheet_) return std::nullopt; // made on a sheet a Reset replaced
     releaseGrab();                               // its vertex may be recovered away
+    // Undoing the newest step ends its settling: a redo gives back the sheet as the user
+    // last saw it, not as the stroke left it (a fold that settled for two minutes came
+    // back as it was at the let-go, with 6 breaks fewer, and broke on from there).
+    const auto newest = std::find_if(strokes_.rbegin(), strokes_.rend(),
+                                     [](const Stroke& done) { return done.applied; });
+    if (newest != strokes_.rend() && &*newest == &st) keepSettlingWithLastStroke();
     Sheet& s = sim_.world().sheet;
     int recovered = 0;
     bool all = true;

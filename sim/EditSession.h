@@ -137,9 +137,10 @@ class EditSession {
     // Undo recovers (§4.2), newest first, every break and hinge since the stroke began —
     // its own and those the sheet made settling after it — and, when all came back, gives
     // back the sheet as it was when the stroke began: positions, velocities, plastic folds.
-    // Redo does the damage again and gives back the sheet as it was when the stroke
-    // ended. Returns the number of damage events recovered (or done again); nothing for
-    // an unknown stroke.
+    // Redo does the damage again and gives back the sheet as it was when the stroke was
+    // undone (an undo of the newest step ends its settling; an older step's settling ends
+    // with the next edit). Returns the number of damage events recovered (or done again); nothing
+    // for an unknown stroke.
     std::optional<int> undoStroke(int stroke);
     std::optional<int> redoStroke(int stroke);
 
