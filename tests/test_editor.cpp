@@ -444,6 +444,17 @@ class TestEditor : public QObject {
         QVERIFY(worldOf(*window)->stepCount > before); // it was playing all along
         const auto still = frames.count();
         QVERIFY2(still <= 1, qPrintable(QString::number(still)));
+        // The status bar counts frames drawn, not snapshots published (it read 59 fps
+        // over a resting sheet that was not drawn at all).
+        // (At most one frame in the last half second: 2 fps.)
+        QStringList shown;
+        int fps = -1;
+        for (const QLabel* label : window->statusBar()->findChildren<QLabel*>()) {
+            shown << label->text();
+            if (label->text().endsWith(QStringLiteral(" fps")))
+                fps = label->text().split(u' ')[0].toInt();
+        }
+        QVERIFY2(fps >= 0 && fps <= 2, qPrintable(shown.join(QStringLiteral(" | "))));
         window->action("overlay.wireframe")->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(frames.count() > still, kSignalWaitMs);
         window->simulation()->setPlaying(false);
@@ -1098,6 +1109,42 @@ class TestEditor : public QObject {
     // Tools ▸ Pin: a click pins the paper around the point, which then stands still
     // while the rest falls; a second click frees it; each is an undo step; pins are
     // saved and replay.
+    // File ▸ Open and New frame the new sheet wherever the old one had gone: a user's
+    // sheet had slid far off the desk, and New came up mostly out of view (the view fit
+    // whichever snapshot arrived first, the old sheet's, still queued).
+    void openAndNewFrameTheNewSheet() {
+        window->simulation()->sync();
+        World far = *worldOf(*window);
+        for (Vec3& x : far.sheet.verts.x) x += Vec3(1.5, 0.0, -2.5);
+        const QString path = jacobiDir.filePath(QStringLiteral("far.paper"));
+        QVERIFY(saveWorld(far, path, nullptr));
+        const auto middle = [](const std::vector<Vec3>& x) {
+            Vec3 lo = x.front(), hi = x.front();
+            for (const Vec3& p : x) {
+                lo = lo.cwiseMin(p);
+                hi = hi.cwiseMax(p);
+            }
+            return Vec3(0.5 * (lo + hi));
+        };
+        const auto framed = [&](const Vec3& at) {
+            return (window->viewport()->camera().target - at).norm() < 0.05;
+        };
+        QVERIFY(window->openFile(path));
+        QTRY_VERIFY(framed(middle(far.sheet.verts.x)));
+        // Playing, as the user's was: the far sheet's snapshots keep coming.
+        window->simulation()->setPlaying(true);
+        QTest::qWait(100);
+        window->newScene(QStringLiteral("press"));
+        window->simulation()->sync();
+        const Vec3 fresh = middle(worldOf(*window)->sheet.verts.x);
+        QVERIFY((fresh - middle(far.sheet.verts.x)).norm() > 2.0);
+        QTRY_VERIFY(framed(fresh));
+        // And it stays framed: no late snapshot of the far sheet moves the view away.
+        QTest::qWait(200);
+        QVERIFY(framed(fresh));
+        window->simulation()->setPlaying(false);
+    }
+
     void pinHoldsThePaperAndIsSaved() {
         window->newScene(QStringLiteral("drop")); // a tilted sheet in the air
         window->simulation()->sync();

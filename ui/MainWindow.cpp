@@ -101,7 +101,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     // After New/Open the crumpled sheet, its snapshots and the renderer's buffers for it
     // are freed, but glibc keeps the freed pages in its arenas (the simulation thread's
     // and the GUI's): give them back once the new sheet's first frame is drawn.
-    connect(sim_.get(), &SimulationThread::worldReplaced, this, [this] { releasePending_ = true; });
+    connect(sim_.get(), &SimulationThread::worldReplaced, this, [this] {
+        releasePending_ = true;
+        // The new sheet's snapshot is the latest now (it was published first). Fitting
+        // the first snapshot to arrive after New or Open could fit the old sheet's, still
+        // queued, and leave the new one out of view.
+        if (auto snap = sim_->latestSnapshot()) viewport_->setSnapshot(snap);
+        firstSnapshot_ = false;
+        input_->fitCamera();
+    });
+    connect(viewport_, &Viewport::frameDrawn, readout_, &StatusReadout::frameDrawn);
     connect(viewport_, &Viewport::frameDrawn, this, [this] {
         if (!releasePending_) return;
         releasePending_ = false;

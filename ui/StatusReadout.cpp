@@ -13,13 +13,21 @@ StatusReadout::StatusReadout(QStatusBar* bar)
     clock_.start();
 }
 
-void StatusReadout::show(const SimulationStatus& st) {
+void StatusReadout::frameDrawn() {
     ++frames_;
+    updateFps();
+}
+
+void StatusReadout::updateFps() {
     if (clock_.elapsed() > 500) {
         fpsValue_ = 1000.0 * frames_ / clock_.restart();
         frames_ = 0;
     }
     fps_->setText(tr("%1 fps").arg(fpsValue_, 0, 'f', 0));
+}
+
+void StatusReadout::show(const SimulationStatus& st) {
+    updateFps();
     step_->setText(tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0));
     // The counts that can be one are said with their plural forms ("1 break", "2 breaks").
     counts_->setText(tr("%1 vertices · %2 springs · %3 (%4/s) · %5")

@@ -18,10 +18,15 @@ class StatusReadout : public QObject {
   public:
     explicit StatusReadout(QStatusBar* bar);
 
-    // Called once per frame drawn.
+    // The simulation's numbers, once per snapshot published.
     void show(const SimulationStatus& status);
+    // Called once per frame the view draws: a snapshot that draws the same picture as
+    // the one shown is not drawn again, so a resting sheet reads about 0 fps.
+    void frameDrawn();
 
   private:
+    void updateFps();
+
     QLabel *fps_, *step_, *counts_;
     QElapsedTimer clock_;
     int frames_ = 0;
