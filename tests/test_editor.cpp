@@ -42,6 +42,7 @@
 #include <QTest>
 #include <QToolButton>
 #include <QUndoStack>
+#include <QUndoView>
 #include <tiny_gltf.h>
 
 using namespace pf;
@@ -319,6 +320,12 @@ class TestEditor : public QObject {
         QVERIFY(window->openFile(path));
         QCOMPARE(window->viewport()->renderOptions().sigma, 0.50);
         QCOMPARE(window->panel()->sigmaSlider()->value(), 50);
+        // The history starts with the file opened, and a new sheet with a new sheet.
+        auto* history = window->findChild<QUndoView*>();
+        QVERIFY(history);
+        QCOMPARE(history->emptyLabel(), QStringLiteral("<sigma.paper>"));
+        window->newScene(QStringLiteral("press"));
+        QCOMPARE(history->emptyLabel(), QStringLiteral("<new sheet>"));
     }
 
     void aSliderDragIsOneUndoStep() {

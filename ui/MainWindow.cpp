@@ -498,12 +498,18 @@ void MainWindow::retranslate() {
     panelDock_->setWindowTitle(tr("Parameters"));
     historyDock_->setWindowTitle(tr("History"));
     solverDock_->setWindowTitle(tr("Solver"));
-    undoView_->setEmptyLabel(tr("<new sheet>"));
+    nameHistoryStart();
     if (hintShown_)
         viewport_->setHint(
             tr("Left drag pushes the paper · L folds, G grabs and I pins (Tools menu) · "
                "right drag orbits · the wheel zooms · F1 lists every key"));
     updateTitle();
+}
+
+void MainWindow::nameHistoryStart() {
+    undoView_->setEmptyLabel(openedFrom_.isEmpty()
+                                 ? tr("<new sheet>")
+                                 : QStringLiteral("<%1>").arg(QFileInfo(openedFrom_).fileName()));
 }
 
 void MainWindow::changeEvent(QEvent* event) {
@@ -590,6 +596,8 @@ void MainWindow::newScene(const QString& scene) {
     sim_->replaceWorld(w);
     undo_->clear();
     file_.clear();
+    openedFrom_.clear();
+    nameHistoryStart();
     firstSnapshot_ = true;
     updateTitle();
 }
@@ -607,6 +615,8 @@ bool MainWindow::openFile(const QString& path) {
     scene_ = QString::fromStdString(load.world->scene);
     undo_->clear();
     file_ = path;
+    openedFrom_ = path;
+    nameHistoryStart();
     firstSnapshot_ = true;
     recent_->add(path);
     updateTitle();

@@ -134,6 +134,10 @@ class MainWindow : public QMainWindow {
     // What the status bar says to a fold: that it began, or why it was refused.
     static QString foldAnswerText(FoldRefusal refusal);
     QString file_;
+    // The file the sheet was opened from (empty for a new sheet): the history's first
+    // entry names it.
+    QString openedFrom_;
+    void nameHistoryStart();
     // What the file holds, and the sheet's state in the newest snapshot (stateHash).
     std::uint64_t savedHash_ = 0, lastHash_ = 0;
     SimParams savedParams_;
