@@ -745,12 +745,12 @@
         <translation>Schrittzeit</translation>
     </message>
     <message>
-        <source>Strain</source>
+        <source>Stretch</source>
         <translation>Dehnung</translation>
     </message>
     <message>
-        <source>|l/l0 - 1| over the structural springs, live</source>
-        <translation>|l/l0 - 1| über die Strukturfedern, live</translation>
+        <source>max(l/l0 - 1, 0) over the uncreased structural springs, live: how far the paper is pulled longer (edges that paper bending between two vertices shortens do not count)</source>
+        <translation>max(l/l0 - 1, 0) über die ungefalteten Strukturfedern, live: wie weit das Papier in die Länge gezogen ist (Kanten, die das Biegen des Papiers zwischen zwei Knoten verkürzt, zählen nicht)</translation>
     </message>
     <message>
         <source>Open Latest Chart…</source>

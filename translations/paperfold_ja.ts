@@ -739,12 +739,12 @@
         <translation>ステップ時間</translation>
     </message>
     <message>
-        <source>Strain</source>
-        <translation>ひずみ</translation>
+        <source>Stretch</source>
+        <translation>伸び</translation>
     </message>
     <message>
-        <source>|l/l0 - 1| over the structural springs, live</source>
-        <translation>構造ばねの |l/l0 - 1|（リアルタイム）</translation>
+        <source>max(l/l0 - 1, 0) over the uncreased structural springs, live: how far the paper is pulled longer (edges that paper bending between two vertices shortens do not count)</source>
+        <translation>折り目のない構造ばねの max(l/l0 - 1, 0)（ライブ）：紙がどれだけ引き伸ばされているか（二つの頂点の間で紙が曲がって縮んだ辺は数えません）</translation>
     </message>
     <message>
         <source>Open Latest Chart…</source>

@@ -739,12 +739,12 @@
         <translation>단계 시간</translation>
     </message>
     <message>
-        <source>Strain</source>
-        <translation>변형률</translation>
+        <source>Stretch</source>
+        <translation>늘어남</translation>
     </message>
     <message>
-        <source>|l/l0 - 1| over the structural springs, live</source>
-        <translation>구조 스프링의 |l/l0 - 1| (실시간)</translation>
+        <source>max(l/l0 - 1, 0) over the uncreased structural springs, live: how far the paper is pulled longer (edges that paper bending between two vertices shortens do not count)</source>
+        <translation>접히지 않은 구조 스프링의 max(l/l0 - 1, 0) (실시간): 종이가 얼마나 늘어났는지 (두 꼭짓점 사이에서 종이가 휘어 짧아진 변은 세지 않음)</translation>
     </message>
     <message>
         <source>Open Latest Chart…</source>

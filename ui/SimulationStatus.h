@@ -9,9 +9,12 @@ struct SimulationStatus {
     std::int64_t step = 0;
     double stepSeconds = 0.0; // wall time of one step, averaged over the last frame
     int vertices = 0, springs = 0, breaks = 0, hinges = 0;
-    int breaksLastSecond = 0;                // breaks made in the last second of simulated time
-    double maxStrain = 0.0, rmsStrain = 0.0; // |l/l0 - 1| over structural springs
-    int threads = 1;                         // the step runs on
+    int breaksLastSecond = 0; // breaks made in the last second of simulated time
+    // max(l/l0 - 1, 0) over the uncreased structural springs: how far the paper is pulled
+    // longer (SheetStats). Not |l/l0 - 1|: across a fold most of that is the chord of
+    // paper bending between two vertices, and a user read 16-22 % there as stretch.
+    double maxStretch = 0.0, rmsStretch = 0.0;
+    int threads = 1; // the step runs on
     bool playing = false;
     bool folding = false;        // a fold is under way: undo, redo and the other tools wait
     std::uint64_t sheetHash = 0; // editedStateHash: tells whether it differs from a file

@@ -154,8 +154,8 @@ void SimulationWorker::publish(double stepSeconds) {
     st.hinges = stats.hinges;
     const auto secondOfSteps = static_cast<std::int64_t>(std::lround(1.0 / w.params.dt));
     st.breaksLastSecond = static_cast<int>(breaksSince(w.sheet, w.stepCount - secondOfSteps));
-    st.maxStrain = stats.maxStrain;
-    st.rmsStrain = stats.rmsStrain;
+    st.maxStretch = stats.maxStretch;
+    st.rmsStretch = stats.rmsStretch;
     st.threads = session_.simulation().threads();
     st.playing = playing_;
     st.folding = session_.folding();

@@ -38,8 +38,8 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
     threads_->setValue(WorkerPool::machineThreads());
     stepTimeLabel_ = new QLabel(this);
     stepTime_ = new QLabel(this);
-    strainTitle_ = new QLabel(this);
-    strain_ = new QLabel(this);
+    stretchTitle_ = new QLabel(this);
+    stretch_ = new QLabel(this);
     breakRateTitle_ = new QLabel(this);
     breakRate_ = new QLabel(this);
     openChart_ = new QPushButton(this);
@@ -56,8 +56,8 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
     grid->addWidget(gravityOutside_, r++, 0, 1, 2);
     grid->addWidget(stepTimeLabel_, r, 0);
     grid->addWidget(stepTime_, r++, 1);
-    grid->addWidget(strainTitle_, r, 0);
-    grid->addWidget(strain_, r++, 1);
+    grid->addWidget(stretchTitle_, r, 0);
+    grid->addWidget(stretch_, r++, 1);
     grid->addWidget(breakRateTitle_, r, 0);
     grid->addWidget(breakRate_, r++, 1);
     grid->addWidget(openChart_, r++, 0, 1, 2);
@@ -123,9 +123,9 @@ void SolverPanel::showThreads(int threads) {
 
 void SolverPanel::showStatus(const SimulationStatus& status) {
     stepTime_->setText(tr("%1 µs").arg(status.stepSeconds * 1e6, 0, 'f', 0));
-    strain_->setText(tr("max %1 %, RMS %2 %")
-                         .arg(100.0 * status.maxStrain, 0, 'f', 2)
-                         .arg(100.0 * status.rmsStrain, 0, 'f', 3));
+    stretch_->setText(tr("max %1 %, RMS %2 %")
+                          .arg(100.0 * status.maxStretch, 0, 'f', 2)
+                          .arg(100.0 * status.rmsStretch, 0, 'f', 3));
     breakRate_->setText(tr("%n per second", nullptr, status.breaksLastSecond));
 }
 
@@ -161,8 +161,10 @@ void SolverPanel::retranslate() {
                             "is left to draw the view.",
                             nullptr, WorkerPool::machineThreads()));
     stepTimeLabel_->setText(tr("Step time"));
-    strainTitle_->setText(tr("Strain"));
-    strain_->setToolTip(tr("|l/l0 - 1| over the structural springs, live"));
+    stretchTitle_->setText(tr("Stretch"));
+    stretch_->setToolTip(tr("max(l/l0 - 1, 0) over the uncreased structural springs, live: how "
+                            "far the paper is pulled longer (edges that paper bending between "
+                            "two vertices shortens do not count)"));
     breakRateTitle_->setText(tr("Breaks"));
     breakRate_->setToolTip(tr("Breaks in the last second of simulated time: paper breaks "
                               "while it is loaded further, and stops when the load stops"));

@@ -31,7 +31,7 @@ class SolverPanel : public QWidget {
     QSpinBox* iterationsBox() const { return iterations_; }
     QCheckBox* gravityBox() const { return gravityOutside_; }
     QSpinBox* threadsBox() const { return threads_; }
-    QLabel* strainLabel() const { return strain_; }
+    QLabel* stretchLabel() const { return stretch_; }
     QLabel* breakRateLabel() const { return breakRate_; }
 
   signals:
@@ -52,7 +52,7 @@ class SolverPanel : public QWidget {
     int edits_ = 0;
     bool updating_ = false;
     QLabel *integratorLabel_ = nullptr, *iterationsLabel_ = nullptr, *dtLabel_ = nullptr,
-           *stepTimeLabel_ = nullptr, *strainTitle_ = nullptr;
+           *stepTimeLabel_ = nullptr, *stretchTitle_ = nullptr;
     QComboBox* integrator_ = nullptr;
     QLabel* materialLabel_ = nullptr;
     QComboBox* material_ = nullptr;
@@ -62,7 +62,7 @@ class SolverPanel : public QWidget {
     QLabel* threadsLabel_ = nullptr;
     QSpinBox* threads_ = nullptr;
     QLabel* stepTime_ = nullptr;
-    QLabel* strain_ = nullptr;
+    QLabel* stretch_ = nullptr;
     QLabel *breakRateTitle_ = nullptr, *breakRate_ = nullptr;
     QPushButton* openChart_ = nullptr;
 };
