@@ -380,13 +380,16 @@ void EditSession::appendEvents(Stroke& stroke, Index from) const {
     }
 }
 
-void EditSession::keepSettlingWithLastStroke() {
-    // The newest step that is done: later ones were undone, and are gone once an edit
-    // begins.
+EditSession::Stroke* EditSession::newestApplied() {
     auto done = std::find_if(strokes_.rbegin(), strokes_.rend(),
                              [](const Stroke& st) { return st.applied; });
-    if (done == strokes_.rend()) return;
-    Stroke& last = *done;
+    return done == strokes_.rend() ? nullptr : &*done;
+}
+
+void EditSession::keepSettlingWithLastStroke() {
+    Stroke* newest = newestApplied();
+    if (!newest) return;
+    Stroke& last = *newest;
     if (last.sheet != sheet_ || last.worldAfter || last.after.x.empty()) return;
     appendEvents(last, last.endEvent);
     last.endEvent = static_cast<Index>(sim_.world().sheet.events.size());
@@ -470,11 +473,9 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     if (st.sheet != sheet_) return std::nullopt; // made on a sheet a Reset replaced
     releaseGrab();                               // its vertex may be recovered away
     // Undoing the newest step ends its settling: a redo gives back the sheet as the user
-    // last saw it, not as the stroke left it (a fold that settled for two minutes came
-    // back as it was at the let-go, with 6 breaks fewer, and broke on from there).
-    const auto newest = std::find_if(strokes_.rbegin(), strokes_.rend(),
-                                     [](const Stroke& done) { return done.applied; });
-    if (newest != strokes_.rend() && &*newest == &st) keepSettlingWithLastStroke();
+    // last saw it, not as the stroke left it (a fold that had settled for two minutes
+    // came back as it was at the let-go, and broke on from there).
+    if (newestApplied() == &st) keepSettlingWithLastStroke();
     Sheet& s = sim_.world().sheet;
     int recovered = 0;
     bool all = true;

@@ -139,8 +139,8 @@ class EditSession {
     // back the sheet as it was when the stroke began: positions, velocities, plastic folds.
     // Redo does the damage again and gives back the sheet as it was when the stroke was
     // undone (an undo of the newest step ends its settling; an older step's settling ends
-    // with the next edit). Returns the number of damage events recovered (or done again); nothing
-    // for an unknown stroke.
+    // with the next edit). Returns the number of damage events recovered (or done again);
+    // nothing for an unknown stroke.
     std::optional<int> undoStroke(int stroke);
     std::optional<int> redoStroke(int stroke);
 
@@ -219,6 +219,9 @@ class EditSession {
     std::optional<StrokeEnd> endStroke(StrokeKind kind);
     // Adds the active damage events from `from` on to `stroke`, with their rest lengths.
     void appendEvents(Stroke& stroke, Index from) const;
+    // The newest step that is done (later ones were undone, and are gone once an edit
+    // begins); null if none is.
+    Stroke* newestApplied();
     // When the next edit begins: the damage the sheet made settling since the newest
     // stroke ended, and the sheet as it is now, become that stroke's, so that its redo
     // gives back the sheet the next edit began on (whose redo needs that mesh).

@@ -1118,9 +1118,6 @@ class TestEditor : public QObject {
         checkReplay(*window, nextFile, lastError);
     }
 
-    // Tools ▸ Pin: a click pins the paper around the point, which then stands still
-    // while the rest falls; a second click frees it; each is an undo step; pins are
-    // saved and replay.
     // File ▸ Open and New frame the new sheet wherever the old one had gone: a user's
     // sheet had slid far off the desk, and New came up mostly out of view (the view fit
     // whichever snapshot arrived first, the old sheet's, still queued).
@@ -1157,6 +1154,9 @@ class TestEditor : public QObject {
         window->simulation()->setPlaying(false);
     }
 
+    // Tools ▸ Pin: a click pins the paper around the point, which then stands still
+    // while the rest falls; a second click frees it; each is an undo step; pins are
+    // saved and replay.
     void pinHoldsThePaperAndIsSaved() {
         window->newScene(QStringLiteral("drop")); // a tilted sheet in the air
         window->simulation()->sync();

@@ -598,7 +598,6 @@ void MainWindow::newScene(const QString& scene) {
     file_.clear();
     openedFrom_.clear();
     nameHistoryStart();
-    firstSnapshot_ = true;
     updateTitle();
 }
 
@@ -617,7 +616,6 @@ bool MainWindow::openFile(const QString& path) {
     file_ = path;
     openedFrom_ = path;
     nameHistoryStart();
-    firstSnapshot_ = true;
     recent_->add(path);
     updateTitle();
     return true;
