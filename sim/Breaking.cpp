@@ -5,6 +5,7 @@
 #include "TopologyEdit.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace pf {
@@ -103,6 +104,29 @@ Index splitTriangle(Sheet& sheet, Index t, Index i, Index j, Index n, Index ein,
     return t2;
 }
 
+// Sweeps of withinReach.
+constexpr int kPlacementSweeps = 64;
+
+// A point near `x` within `reach[k]` of each `around[k]`, or, where the balls do not
+// meet, one that shares the excess among them (simultaneous projections: each sweep
+// moves x by the mean of its moves onto the balls it lies outside).
+Vec3 withinReach(Vec3 x, const std::array<Vec3, 4>& around, const std::array<double, 4>& reach) {
+    for (int sweep = 0; sweep < kPlacementSweeps; ++sweep) {
+        Vec3 move = Vec3::Zero();
+        int outside = 0;
+        for (std::size_t k = 0; k < around.size(); ++k) {
+            const Vec3 d = x - around[k];
+            const double len = d.norm();
+            if (!(len > reach[k])) continue;
+            move += d * (reach[k] / len - 1.0);
+            ++outside;
+        }
+        if (outside == 0) break;
+        x += move / outside;
+    }
+    return x;
+}
+
 // What i and j each give the new vertex: a sixth of the rest mass of the two triangles.
 double massShare(const Sheet& sheet, Index spring) {
     const auto& faces = sheet.springs.faces[spring];
@@ -114,7 +138,7 @@ double massShare(const Sheet& sheet, Index spring) {
 } // namespace
 
 Index breakEdge(Sheet& sheet, Index spring, const std::vector<Vec3>& normals, double psi,
-                std::int64_t step) {
+                std::int64_t step, bool keepLengths) {
     auto& V = sheet.verts;
     auto& S = sheet.springs;
     const Index i = S.a[spring], j = S.b[spring];
@@ -138,7 +162,19 @@ Index breakEdge(Sheet& sheet, Index spring, const std::vector<Vec3>& normals, do
     const Vec3 mid = 0.5 * (V.x[i] + V.x[j]);
     const double bulge = (mid - 0.5 * (V.x[r] + V.x[l])).dot(edgeNormal);
     const double side = bulge < 0.0 ? -1.0 : 1.0;
-    const Vec3 xn = mid + side * breakOffset(len, l0, psi) * edgeNormal;
+    Vec3 xn = mid + side * breakOffset(len, l0, psi) * edgeNormal;
+    // Paper that does not stretch (keepLengths): n goes where none of its four new edges
+    // is longer than its rest length, as near Eq. 11's point as that allows. Eq. 11
+    // gives the halves their rest length, but the edges across, to r and to l, were
+    // left up to 43 % long where a fold had pressed the edge to a fraction of its
+    // length (the cell about it sheared), and the next steps pulled them back through
+    // the paper around.
+    if (keepLengths) {
+        const Vec2 Xn = 0.5 * (V.X[i] + V.X[j]);
+        xn = withinReach(xn, {V.x[i], V.x[j], V.x[r], V.x[l]},
+                         {(V.X[i] - Xn).norm(), (V.X[j] - Xn).norm(), (V.X[r] - Xn).norm(),
+                          (V.X[l] - Xn).norm()});
+    }
 
     // Lumped masses follow rest areas: i and j each give up a sixth of the two old
     // triangles' mass, n receives both. Store exactly what was taken so recovery
@@ -435,7 +471,8 @@ int runBreakPass(Sheet& sheet, const SimParams& params, Rng& rng, std::int64_t s
                 breakProbabilityForGrowth(c.probability, growth, params.breakReferenceContraction);
             if (!(rng.uniform() < p)) continue;
             scratch.massGiven[S.a[s]] = scratch.massGiven[S.b[s]] = 1;
-            const Index ev = breakEdge(sheet, s, normals, params.psi, step);
+            const Index ev =
+                breakEdge(sheet, s, normals, params.psi, step, keepsEdgeLengths(params.integrator));
             scratch.probability[s] = 0.0f; // a crease now: it cannot break again
             for (Index t : sheet.events[ev].tris) {
                 if (t >= static_cast<Index>(scratch.touched.size()))

@@ -39,8 +39,10 @@ void recordCurrentContraction(Sheet& sheet, const SimParams& params);
 // Breaks structural spring `spring` (which must have two faces): inserts vertex n
 // between its ends, offset by Eq. 11 toward the side the edge bends to, splits both
 // triangles, turns the spring into a crease and logs the event. Returns the event id.
+// `keepLengths` (paper that does not stretch, keepsEdgeLengths): n rises no farther than
+// keeps the new edges across (to the triangles' far corners) within their rest lengths.
 Index breakEdge(Sheet& sheet, Index spring, const std::vector<Vec3>& normals, double psi,
-                std::int64_t step);
+                std::int64_t step, bool keepLengths = false);
 
 // §4.2 recovery condition: e_ij is still this event's crease, e_in and e_nj are still
 // breakable, and the four triangles are as the break left them.

@@ -535,7 +535,8 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         if (se.kind == EventKind::Break) {
             if (!canBreak(s, se.edge)) continue;
             computeVertexNormals(s, normals);
-            se.event = breakEdge(s, se.edge, normals, w.params.psi, w.stepCount);
+            se.event = breakEdge(s, se.edge, normals, w.params.psi, w.stepCount,
+                                 keepsEdgeLengths(w.params.integrator));
             s.springs.rest[se.edge] = se.creaseRest; // the crease as the stroke left it
         } else {
             if (!canHinge(s, se.edge)) continue;

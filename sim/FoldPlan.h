@@ -3,6 +3,7 @@
 #include "SceneScript.h"
 #include "World.h"
 
+#include <cmath>
 #include <numbers>
 
 namespace pf {
@@ -53,14 +54,50 @@ constexpr double kFoldTurnRate = std::numbers::pi / 1.5; // rad/s
 // go.
 constexpr double kFoldPress = 1.2; // s
 constexpr double kFoldHold = 0.5;  // s
-// The line the flap turns about lies this far off the paper, on the side it folds to:
-// the two layers of a flat fold then lie a paper's crumple apart, not in each other.
+// The flap lands twice this far above the highest paper along the line, on the side it
+// folds to: the two layers of a flat fold then lie a paper's crumple apart, not in each
+// other.
 constexpr double kFoldLift = 0.003; // m
 // A fold that must lift the sheet off the desk lifts it, and puts it down, in this time.
 constexpr double kFoldLiftSeconds = 0.5; // s
 // Vertices closer to the line than this stay free: the crease forms there.
 constexpr double kFoldBand = 0.01;    // m
 constexpr double kMinFoldLine = 0.01; // m
+// Paper off the plane the fold turns in by more than this share of its distance from
+// the line stays free too: held, it would be carried away from the line and stretch the
+// paper between it and the line's other side by about half the square (0.3 %).
+constexpr double kHeldSlope = 0.08;
+// The carry is this many turns per half turn, each about where the path turns then.
+constexpr int kCarrySegments = 8;
+
+// The path of the flap: turned by θ about `axis` through `pivot`, a line in the paper's
+// plane, and raised along `up` by rise·s(θ), s(0) = 0, s(π) = 1. Turned about a line the
+// paper lies in, the flap never moves away from the rest of the paper: the distance of
+// two points across the line only shrinks as it turns. The rise, which rounds the
+// band and puts the flap on the rest rather than in it, must not outpace that: at
+// distances d and d_r from the line it may start no faster than d_r/2 per radian. So
+// s is a blend of sin(θ/2) (a start at rise/2 per radian, which rounds the band at
+// once) and (1 − cos θ)/2 (a start as θ²), the first weighted `early` =
+// min(1, kEarlyRise·kFoldBand / rise).
+struct FoldPath {
+    Vec3 pivot, axis, up;
+    double rise = 0.0;  // m, at θ = π
+    double early = 1.0; // the weight of sin(θ/2) in s
+    double shareAt(double theta) const {
+        return early * std::sin(0.5 * theta) + (1.0 - early) * 0.5 * (1.0 - std::cos(theta));
+    }
+    // Where the point x of the flat flap is at θ.
+    Vec3 at(const Vec3& x, double theta) const {
+        return pivot + Eigen::AngleAxisd(theta, axis) * (x - pivot) + rise * shareAt(theta) * up;
+    }
+    // The line the path turns about at θ (where it is at rest at that instant): the
+    // pivot raised with the flap and moved across by d(rise s)/dθ.
+    Vec3 pivotAt(double theta) const {
+        const double slope =
+            early * 0.5 * std::cos(0.5 * theta) + (1.0 - early) * 0.5 * std::sin(theta);
+        return pivot + rise * shareAt(theta) * up + rise * slope * axis.cross(up);
+    }
+};
 
 FoldPlan planFold(const World& world, const FoldRequest& request);
 

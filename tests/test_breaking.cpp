@@ -253,6 +253,44 @@ class TestBreaking : public QObject {
         QCOMPARE(s.triangleCount(), 4);
     }
 
+    void paperThatDoesNotStretchBreaksWithoutStretchingTheNewEdges() {
+        // The folded quad's edge is pressed to 0.8 of its length while r and l sit at
+        // their rest distance from its middle. Eq. 11 as the paper has it sinks n by 0.3,
+        // which leaves the edges across (r-n, n-l) 44 % long; paper that does not stretch
+        // (keepLengths, xpbd) puts n where none of its four edges is long.
+        Sheet paper = test::makeFoldedQuad();
+        std::vector<Vec3> n;
+        computeVertexNormals(paper, n);
+        Sheet soft = paper;
+        const auto newEdgeStretch = [](const Sheet& s, Index ev) {
+            double worst = -1.0;
+            for (Index e : s.events[ev].springs) {
+                const double l = (s.verts.x[s.springs.a[e]] - s.verts.x[s.springs.b[e]]).norm();
+                worst = std::max(worst, l / s.springs.rest[e] - 1.0);
+            }
+            return worst;
+        };
+        const Index asPaper = breakEdge(soft, 0, n, 1.0, 0);
+        QVERIFY(std::abs(newEdgeStretch(soft, asPaper) - (std::sqrt(0.52) / 0.5 - 1.0)) < 1e-9);
+        const Index stiff = breakEdge(paper, 0, n, 1.0, 0, true);
+        QCOMPARE(validateSheet(paper), std::string());
+        qInfo("new edges' largest stretch: %.1f %% by Eq. 11, %.2g %% kept",
+              100.0 * newEdgeStretch(soft, asPaper), 100.0 * newEdgeStretch(paper, stiff));
+        QVERIFY(newEdgeStretch(paper, stiff) < 1e-9);
+        // A cell sheared so that r and l lie farther than that from the middle: no point
+        // keeps both edges across at their rest length, and neither takes all the excess.
+        Sheet sheared = test::makeFoldedQuad();
+        sheared.verts.x[2].z() = 0.55;
+        sheared.verts.x[3].z() = -0.55;
+        computeVertexNormals(sheared, n);
+        const Index ev = breakEdge(sheared, 0, n, 1.0, 0, true);
+        const Vec3& xn = sheared.verts.x[sheared.events[ev].vertex];
+        const double toR = (xn - sheared.verts.x[2]).norm(), toL = (xn - sheared.verts.x[3]).norm();
+        qInfo("sheared cell: r-n %.4f, n-l %.4f (rest 0.5, 0.55 at best)", toR, toL);
+        QVERIFY(std::abs(toR - toL) < 1e-3);
+        QVERIFY(toR < 0.56 && toL < 0.56);
+    }
+
     void ridgeMovesTheOtherWay() {
         Sheet s = test::makeFoldedQuad();
         s.verts.x[2].y() = s.verts.x[3].y() = -0.3; // r, l below the edge: a ridge

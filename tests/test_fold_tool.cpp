@@ -3,6 +3,7 @@
 // undo step, replays bit for bit, and a sheet saved mid-fold finishes the fold.
 #include "EditSession.h"
 #include "FoldAngle.h"
+#include "FoldPlan.h"
 #include "JacobiScene.h"
 #include "RecordingFile.h"
 #include "Scenes.h"
@@ -55,6 +56,51 @@ double runUntilLetGo(EditSession& s) {
 
 double length() {
     return SceneOptions{}.length;
+}
+
+// Plays the fold's pin groups alone, each pinned vertex moving as its group says and
+// nothing else moving, and returns the largest stretch they ask of the paper between a
+// carried vertex and one that stays (held by the lift, or lying beyond the band on the
+// desk): max |x_c − x_r| / |X_c − X_r| − 1 over pairs less than 4 cm apart in the paper.
+double stretchTheCarryAsks(World w, const FoldRequest& request, const FoldPlan& plan) {
+    Sheet& sheet = w.sheet;
+    auto& V = sheet.verts;
+    std::vector<char> carried(static_cast<std::size_t>(V.size()), 0);
+    for (const PinGroup& g : plan.motions)
+        if (g.turnRate != 0.0)
+            for (Index i : g.vertices) carried[static_cast<std::size_t>(i)] = 1;
+    for (const PinGroup& g : plan.motions)
+        for (Index i : g.vertices) V.pinned[i] = 1;
+    // Across the line as drawn on the desk (the test's lines lie in it): what stays is the
+    // paper beyond the band on the side the flap is not on.
+    const Vec3 along = (request.to - request.from).normalized();
+    const Vec3 across = Vec3::UnitY().cross(along);
+    const auto sideOf = [&](Index i) { return (V.x[i] - request.from).dot(across); };
+    std::vector<Index> stays, carry;
+    for (Index i = 0; i < V.size(); ++i)
+        if (carried[static_cast<std::size_t>(i)]) carry.push_back(i);
+    const double flapSide = carry.empty() ? 1.0 : (sideOf(carry.front()) > 0.0 ? 1.0 : -1.0);
+    // Lifted off the desk, what stays is what the lift holds; the rest of that side is
+    // free, and goes where the paper takes it.
+    bool lifted = false;
+    for (const PinGroup& g : plan.motions) lifted = lifted || g.turnRate == 0.0;
+    for (Index i = 0; i < V.size(); ++i)
+        if (-flapSide * sideOf(i) > kFoldBand && (!lifted || V.pinned[i])) stays.push_back(i);
+    w.script.pins = plan.motions;
+    SphereTool sphere;
+    const double h = w.params.dt;
+    double worst = 0.0;
+    for (double t = w.time; t < plan.release - h; t += h) {
+        applyScript(w.script, t, h, sheet, sphere);
+        for (Index i = 0; i < V.size(); ++i)
+            if (V.pinned[i]) V.x[i] += h * V.v[i];
+        for (Index c : carry)
+            for (Index r : stays) {
+                const double apart = sheet.materialDistance(c, r);
+                if (apart < 0.04) worst = std::max(worst, (V.x[c] - V.x[r]).norm() / apart - 1.0);
+            }
+    }
+    return worst;
 }
 
 } // namespace
@@ -162,6 +208,58 @@ class TestFoldTool : public QObject {
         QVERIFY(std::abs(held - 90.0) < 15.0);
     }
 
+    void theCarryNeverPullsTheFlapAwayFromThePaperThatStays() {
+        // Turned about a line 3 mm off the paper, the flap swung away from the line before
+        // it came over, and the paper between it and the rest had to stretch: by 1.4 %
+        // for a mountain fold across a sheet on the desk (the solve let 17.6 % through),
+        // by 81 % for a second fold across the first, whose axis the first fold's
+        // rounded crease had tilted 14 mm off the paper at the line's far end (8,500 %).
+        // The fold now turns in the paper's own plane, and holds only paper that lies in
+        // it (kHeldSlope): the pins alone ask at most half the square of that slope.
+        EditSession s = editorSession();
+        const FoldRequest across[] = {acrossTheMiddle(),
+                                      acrossTheMiddle(kPi, true),
+                                      acrossTheMiddle(kPi / 2, true),
+                                      {Vec3(0.0, 0, -0.2), Vec3(0.0, 0, 0.2), kPi, false}};
+        for (const FoldRequest& r : across) {
+            const FoldPlan plan = planFold(s.world(), r);
+            QCOMPARE(plan.refusal, FoldRefusal::None);
+            const double asked = stretchTheCarryAsks(s.world(), r, plan);
+            qInfo("a %s fold to %.0f deg asks %.3f %% of the paper",
+                  r.mountain ? "mountain" : "valley", r.angle * 180.0 / kPi, 100.0 * asked);
+            QVERIFY(asked < 0.5 * kHeldSlope * kHeldSlope + 1e-4);
+        }
+        // Across a first fold, mountain: the sheet is lifted, and both layers are held.
+        QCOMPARE(s.fold(acrossTheMiddle()), FoldRefusal::None);
+        runUntilLetGo(s);
+        advanceSeconds(s, 2.0);
+        const FoldRequest again{Vec3(0.01, 0, -0.2), Vec3(0.0, 0, 0.2), kPi, true};
+        const FoldPlan second = planFold(s.world(), again);
+        QCOMPARE(second.refusal, FoldRefusal::None);
+        const double asked = stretchTheCarryAsks(s.world(), again, second);
+        qInfo("a second fold across the first asks %.3f %% of the paper", 100.0 * asked);
+        QVERIFY(asked < 0.5 * kHeldSlope * kHeldSlope + 1e-4);
+    }
+
+    void aFoldDoesNotStretchThePaper() {
+        // Issue 9's bound holds while the flap is carried, pressed and let go: a mountain
+        // fold on the desk stretched the paper in its band 17.6 % when the carry turned it
+        // about a line 3 mm off the paper. Physics only (CI time under the sanitizers).
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
+        for (const bool mountain : {false, true}) {
+            EditSession s = editorSession(true, "xpbd");
+            QCOMPARE(s.fold(acrossTheMiddle(kPi, mountain)), FoldRefusal::None);
+            double worst = 0.0;
+            while (s.folding()) {
+                QCOMPARE(s.advance(1), StepStatus::Ok);
+                worst = std::max(worst, computeStats(s.world().sheet).maxStretch);
+            }
+            qInfo("%s fold: largest stretch %.2f %%", mountain ? "mountain" : "valley",
+                  100.0 * worst);
+            QVERIFY(worst < 0.01);
+        }
+    }
+
     void theFoldGoesTowardTheViewerOrAway_data() {
         QTest::addColumn<QString>("integrator");
         QTest::newRow("jacobi") << QStringLiteral("jacobi");
@@ -187,8 +285,11 @@ class TestFoldTool : public QObject {
             FoldRequest request = acrossTheMiddle(kPi, mountain);
             if (fromBelow) request.viewer = -Vec3::UnitY();
             QCOMPARE(s.fold(request), FoldRefusal::None);
-            QCOMPARE(s.world().script.pins.size(), std::size_t(1)); // the flap, carried
-            const std::vector<Index> flap = s.world().script.pins.front().vertices;
+            // The flap, carried in kCarrySegments turns.
+            const auto& groups = s.world().script.pins;
+            QCOMPARE(groups.size(), std::size_t(kCarrySegments));
+            const std::vector<Index> flap = groups.front().vertices;
+            for (const PinGroup& g : groups) QVERIFY(g.vertices == flap);
             advanceSeconds(s, 0.75);
             const auto& x = s.world().sheet.verts.x;
             std::vector<bool> inFlap(x.size(), false);
@@ -219,7 +320,7 @@ class TestFoldTool : public QObject {
         QCOMPARE(s.fold(acrossTheMiddle(kPi, true)), FoldRefusal::None);
         // Lifted first (the flap and the rest of the sheet), then turned, then put down.
         const auto& groups = s.world().script.pins;
-        QCOMPARE(groups.size(), std::size_t(5));
+        QCOMPARE(groups.size(), std::size_t(2 + kCarrySegments + 2));
         const std::vector<Index> flap = groups[0].vertices, rest = groups[1].vertices;
         auto meanHeight = [&](const std::vector<Index>& vs) {
             double sum = 0.0;
@@ -264,10 +365,13 @@ class TestFoldTool : public QObject {
         double worst = 0.0;
         while (s.folding()) {
             QCOMPARE(s.advance(12), StepStatus::Ok);
-            worst = std::max(worst, computeStats(s.world().sheet).maxStrain);
+            worst = std::max(worst, computeStats(s.world().sheet).maxStretch);
         }
-        qInfo("largest strain while the second fold was carried: %.0f %%", 100.0 * worst);
-        QVERIFY(worst < 1.0);
+        qInfo("largest stretch while the second fold was carried: %.1f %%", 100.0 * worst);
+        // Paper that does not stretch: what is left is where the first crease meets the
+        // new line, in the steps a break makes new edges across a sheared cell
+        // (docs/model.md). The paper's soft springs stretch as they always do.
+        QVERIFY(worst < (integrator == QLatin1String("xpbd") ? 0.05 : 1.0));
     }
 
     void whatCannotBeFoldedIsRefusedWithItsReason() {
@@ -441,7 +545,8 @@ class TestFoldTool : public QObject {
         advanceSeconds(s, 2.0); // round, pressed, not yet opened
         const WorldLoad load = decodeWorld(encodeWorld(s.worldToSave()));
         QVERIFY2(load.world, qPrintable(load.error));
-        QCOMPARE(load.world->script.pins.size(), std::size_t(2)); // the carry and the opening
+        // The carry, in kCarrySegments turns, and the opening by half a turn, in half as many.
+        QCOMPARE(load.world->script.pins.size(), std::size_t(kCarrySegments + kCarrySegments / 2));
         Simulation resumed(*load.world);
         runUntilLetGo(s);
         advanceSeconds(s, 0.5);
