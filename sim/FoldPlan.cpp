@@ -124,7 +124,8 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
     // new vertices and 28 % stretch; with sin(θ/2), 1 and 0.3 %). But it must not ask
     // the paper across the line to stretch: over the paper held on both sides near the
     // band, the largest stretch the pins alone would ask is checked at kRiseChecks
-    // angles, and the earliest rise that asks at most half what the held slope may is taken.
+    // angles, and the earliest rise that asks at most half what the held slope may is taken
+    // (or, if none does, the one that asks least).
     {
         const auto nearBand = [&](Index i, double sign) {
             return holdable(i, sign) &&
@@ -144,16 +145,28 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
                     for (Index r : restNear) {
                         const double apart = sheet.materialDistance(c, r);
                         if (apart > 2.0 * (kFoldBand + kRiseReach)) continue;
-                        worst = std::max(worst, (at - V.x[r]).norm() / apart - 1.0);
+                        // Paper already stretched (soft springs) is not asked for more.
+                        const double was = std::max(apart, (V.x[c] - V.x[r]).norm());
+                        worst = std::max(worst, (at - V.x[r]).norm() / was - 1.0);
                     }
                 }
             }
             return worst;
         };
         const double allowed = 0.25 * kHeldSlope * kHeldSlope; // half the held slope's
-        for (path.early = 1.0; path.early > kEarliestRise; path.early *= 0.5)
-            if (asked(path) <= allowed) break;
-        if (path.early <= kEarliestRise) path.early = 0.0;
+        // Where none is within that (soft paper that a first fold left stretched and
+        // rumpled), the one that asks least.
+        double best = std::numeric_limits<double>::infinity(), bestEarly = 0.0;
+        for (double early = 1.0;; early *= 0.5) {
+            path.early = early > kEarliestRise ? early : 0.0;
+            const double ask = asked(path);
+            if (ask < best) {
+                best = ask;
+                bestEarly = path.early;
+            }
+            if (ask <= allowed || path.early == 0.0) break;
+        }
+        path.early = bestEarly;
     }
 
     // The lowest point the flap reaches on its way round, with the sheet raised by `lift`.
