@@ -39,8 +39,9 @@ void recordCurrentContraction(Sheet& sheet, const SimParams& params);
 // Breaks structural spring `spring` (which must have two faces): inserts vertex n
 // between its ends, offset by Eq. 11 toward the side the edge bends to, splits both
 // triangles, turns the spring into a crease and logs the event. Returns the event id.
-// `keepLengths` (paper that does not stretch, keepsEdgeLengths): n rises no farther than
-// keeps the new edges across (to the triangles' far corners) within their rest lengths.
+// `keepLengths` (paper that does not stretch, keepsEdgeLengths): n is moved from Eq. 11's
+// point to where none of its four new edges is longer than its rest length (or, where no
+// point is, to one that shares the excess among them).
 Index breakEdge(Sheet& sheet, Index spring, const std::vector<Vec3>& normals, double psi,
                 std::int64_t step, bool keepLengths = false);
 

@@ -102,10 +102,14 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
     // plane by at most kHeldSlope of that distance. Turning paper about a line it does
     // not lie in moves it away from the line: held on both sides, the paper between
     // would have to stretch, by about half the square of the slope (docs/model.md).
+    // How far vertex i lies from the line, on the flap's side (sign 1) or the other.
+    const auto beyond = [&](Index i, double sign) {
+        return sign * side * (V.x[i] - onPaper).dot(across);
+    };
     const auto holdable = [&](Index i, double sign) {
-        const Vec3 r = V.x[i] - onPaper;
-        const double d = sign * side * r.dot(across);
-        return d > kFoldBand && std::abs(r.dot(front)) <= kHeldSlope * d && !V.pinned[i];
+        const double d = beyond(i, sign);
+        return d > kFoldBand && std::abs((V.x[i] - onPaper).dot(front)) <= kHeldSlope * d &&
+               !V.pinned[i];
     };
     PinGroup carry;
     for (Index i = 0; i < V.size(); ++i)
@@ -120,16 +124,16 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
     FoldPath path{onPaper, carry.axis, up, 2.0 * (highest + kFoldLift), 1.0};
     // How early the flap may rise: the earlier, the rounder the band while the flap goes
     // round (turned about a line through a row of vertices with the rise coming as θ², a
-    // fold along the editor's sheet bent the band at that row alone and broke into 90
-    // new vertices and 28 % stretch; with sin(θ/2), 1 and 0.3 %). But it must not ask
+    // fold along the editor's sheet bent the band at that row alone: it ended with
+    // 590-602 vertices and read 28 % stretch; with sin(θ/2), 507-509 and 0.3 %; 508 and
+    // 0.5 % when the carry turned 3 mm off the paper). But it must not ask
     // the paper across the line to stretch: over the paper held on both sides near the
     // band, the largest stretch the pins alone would ask is checked at kRiseChecks
     // angles, and the earliest rise that asks at most half what the held slope may is taken
     // (or, if none does, the one that asks least).
     {
         const auto nearBand = [&](Index i, double sign) {
-            return holdable(i, sign) &&
-                   sign * side * (V.x[i] - onPaper).dot(across) < kFoldBand + kRiseReach;
+            return holdable(i, sign) && beyond(i, sign) < kFoldBand + kRiseReach;
         };
         std::vector<Index> flapNear, restNear;
         for (Index i = 0; i < V.size(); ++i) {
@@ -169,21 +173,19 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
         path.early = bestEarly;
     }
 
-    // The lowest point the flap reaches on its way round, with the sheet raised by `lift`.
-    auto lowestOnTheWay = [&](double lift) {
-        double lowest = std::numeric_limits<double>::infinity();
-        for (int k = 1; k <= kDeskChecks; ++k)
-            for (Index i : carry.vertices)
-                lowest = std::min(lowest, path.at(V.x[i], std::numbers::pi * k / kDeskChecks).y());
-        return lowest + lift;
-    };
+    // The lowest point the flap reaches on its way round.
+    double lowestOnTheWay = std::numeric_limits<double>::infinity();
+    for (int k = 1; k <= kDeskChecks; ++k)
+        for (Index i : carry.vertices)
+            lowestOnTheWay =
+                std::min(lowestOnTheWay, path.at(V.x[i], std::numbers::pi * k / kDeskChecks).y());
     // A flap that would pass through the desk (a mountain fold of paper lying face up)
     // is folded as a hand folds it under: the sheet is lifted off the desk first, by as
     // much as the flap needs, and put down again once folded.
     double lift = 0.0;
     PinGroup rest;
-    if (world.groundEnabled && lowestOnTheWay(0.0) < world.groundHeight - kDeskTolerance) {
-        lift = world.groundHeight + kDeskTolerance - lowestOnTheWay(0.0);
+    if (world.groundEnabled && lowestOnTheWay < world.groundHeight - kDeskTolerance) {
+        lift = world.groundHeight + kDeskTolerance - lowestOnTheWay;
         for (Index i = 0; i < V.size(); ++i) {
             // Pins hold the paper down: it cannot be lifted.
             if (V.pinned[i]) return refuse(FoldRefusal::DeskInTheWay);
