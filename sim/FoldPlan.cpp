@@ -120,7 +120,11 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
     // The flap lands on the rest this far off the paper's plane: above the highest paper
     // along the line by 2 kFoldLift, so that the layers lie a paper's crumple apart.
     double highest = 0.0;
-    for (Index i : near) highest = std::max(highest, (V.x[i] - onPaper).dot(up));
+    for (Index i : near) {
+        const double off = (V.x[i] - onPaper).dot(up);
+        if (std::abs(off) <= kHeldSlope * std::max(std::abs(beyond(i, 1.0)), kFoldBand))
+            highest = std::max(highest, off);
+    }
     FoldPath path{onPaper, carry.axis, up, 2.0 * (highest + kFoldLift), 1.0};
     // How early the flap may rise: the earlier, the rounder the band while the flap goes
     // round (turned about a line through a row of vertices with the rise coming as θ², a
