@@ -1,5 +1,7 @@
 #include "Simulation.h"
 
+#include "CreaseRelaxation.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -61,10 +63,10 @@ void keepToolAboveDesk(World& w) {
     sp.velocity = (sp.center - previous) / w.params.dt;
 }
 
-void keepOutOfContacts(World& w, Index firstVertex) {
+void keepOutOfContacts(World& w, const std::vector<Index>& vertices) {
     auto& V = w.sheet.verts;
     const SphereTool& sp = w.sphere;
-    for (Index i = firstVertex; i < V.size(); ++i) {
+    for (Index i : vertices) {
         if (sp.active) {
             const Vec3 d = V.x[i] - sp.center;
             const double dist = d.norm();
@@ -138,7 +140,14 @@ StepStatus Simulation::step() {
         // Eq. 11 lifts a new vertex off the edge toward the side it bends to, which
         // can be into the desk or the tool; an integrator that keeps the sheet out of
         // them gets the vertex back on their surface.
-        if (integrator_->resolvesContacts()) keepOutOfContacts(w, before);
+        if (keepsEdgeLengths(p.integrator) && sheet.verts.size() > before) {
+            const std::vector<Index> moved = relaxAroundNewVertices(sheet, before);
+            if (integrator_->resolvesContacts()) keepOutOfContacts(w, moved);
+        } else if (integrator_->resolvesContacts()) {
+            std::vector<Index> added;
+            for (Index i = before; i < sheet.verts.size(); ++i) added.push_back(i);
+            keepOutOfContacts(w, added);
+        }
         // The breaks may have changed the mesh since the stars were refreshed: not lent.
         if (p.hinges)
             lastHinges_ = runHingePass(sheet, p, w.stepCount, hingeScratch_, {&pool, nullptr});
