@@ -391,6 +391,44 @@ class TestFoldTool : public QObject {
         QVERIFY(worst < (integrator == QLatin1String("xpbd") ? 0.05 : 1.0));
     }
 
+    void aSecondFoldAcrossTheFirstStays_data() {
+        QTest::addColumn<double>("line");
+        QTest::addColumn<bool>("mountain");
+        QTest::newRow("valley through the middle") << 0.0 << false;
+        QTest::newRow("valley 2 cm off the middle") << 0.02 << false;
+        QTest::newRow("mountain 1 cm off the middle") << 0.01 << true;
+    }
+
+    void aSecondFoldAcrossTheFirstStays() {
+        // The sheet folded in two and folded again across the first crease: a doubled
+        // stack, whose fold spreads over two or three rows of the mesh. It sprang open
+        // (the sheet's width back to 0.19-0.21 m) while a crease's springback was a whole
+        // row's; and the lift, counting the first fold's open loop as paper to clear,
+        // carried the flap round in a loose roll that stretched its band 5.85 %.
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
+        QFETCH(double, line);
+        QFETCH(bool, mountain);
+        EditSession s = editorSession(true, "xpbd");
+        QCOMPARE(s.fold(acrossTheMiddle()), FoldRefusal::None);
+        runUntilLetGo(s);
+        advanceSeconds(s, 1.0);
+        QCOMPARE(s.fold({Vec3(line, 0, -0.2), Vec3(line, 0, 0.2), kPi, mountain}), FoldRefusal::None);
+        QVERIFY(runUntilLetGo(s) > 0.0);
+        advanceSeconds(s, 2.0);
+        const double stretch = computeStats(s.world().sheet).maxStretch;
+        advanceSeconds(s, 4.0);
+        double left = 1e9, right = -1e9;
+        for (const Vec3& x : s.world().sheet.verts.x) {
+            left = std::min(left, x.x());
+            right = std::max(right, x.x());
+        }
+        qInfo("2 s after the let-go the largest stretch is %.2f %%; 6 s after, the sheet is "
+              "%.3f m wide (0.21 m unfolded, 0.105 m folded flat)",
+              100.0 * stretch, right - left);
+        QVERIFY(stretch < 0.01); // issue 9's bound, on the slivers the breaks inserted too
+        QVERIFY(right - left < 0.16);
+    }
+
     void whatCannotBeFoldedIsRefusedWithItsReason() {
         EditSession s = editorSession();
         // The paper faces up on the desk, and a pin holds it down: a mountain fold would
@@ -445,24 +483,23 @@ class TestFoldTool : public QObject {
     }
 
     void undoAllAndRedoAllGivesBackEveryFold() {
-        // The sheet breaks a little settling after a fold; the next fold began on that
-        // mesh, so redoing the first must give it back, or the second cannot be redone.
+        // Where the sheet breaks settling after a fold, the next fold began on that mesh,
+        // so redoing the first must give it back, or the second cannot be redone. (Since
+        // creases soften, these folds no longer break after the let-go: 503 and 544
+        // vertices at the let-go and 2 s later; the hashes below still hold Redo to the
+        // sheet as it was.)
         EditSession s = editorSession();
         std::vector<EditSession::StrokeEnd> folds;
-        std::uint64_t twice = 0;
-        Index vertices = 0;
         for (const FoldRequest& r :
              {acrossTheMiddle(), FoldRequest{Vec3(0.01, 0, -0.2), Vec3(0.0, 0, 0.2), kPi, true}}) {
             QCOMPARE(s.fold(r), FoldRefusal::None);
             runUntilLetGo(s);
             folds.push_back(*s.takeFinished());
-            vertices = s.world().sheet.verts.size();
             advanceSeconds(s, 2.0);
         }
-        QVERIFY(s.world().sheet.verts.size() > vertices); // it went on breaking, settling
         // Redo gives back the sheet as the user saw it when undoing the last fold.
-        twice = stateHash(s.world().sheet);
-        vertices = s.world().sheet.verts.size();
+        const std::uint64_t twice = stateHash(s.world().sheet);
+        const Index vertices = s.world().sheet.verts.size();
         // As in the editor, which plays on between the clicks.
         QVERIFY(s.undoStroke(folds[1].stroke));
         advanceSeconds(s, 1.0);
