@@ -533,6 +533,8 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations) {
             ++incidentStart_[k.a + 1];
             ++incidentStart_[k.b + 1];
         }
+        for (Index i = 0; i < nv; ++i)
+            if (w_[i] != 0.0 && incidentStart_[i + 1] > kMaxProjectedDegree) return;
         for (Index i = 0; i < nv; ++i) incidentStart_[i + 1] += incidentStart_[i];
         incident_.resize(incidentStart_[nv]);
         std::vector<Index> fill(incidentStart_.begin(), incidentStart_.end() - 1);

@@ -472,9 +472,12 @@ class TestHostileInput : public QObject {
         // A press recording whose sheet holds two material points 8e-59 m apart: a break
         // halved a triangle that thin into one of zero area. A recording whose sheet holds a
         // spring of rest length 1.9e185: Eq. 11 squared it and put the new vertex at
-        // infinity.
+        // infinity. A recording whose 20-vertex sheet has edges up to 58 m long: its breaks
+        // made a fan of 1,867 springs round one vertex within 20 steps, and the projection's
+        // dense block there took 27 s to replay in Release, 158 s under the sanitizers
+        // (kMaxProjectedDegree).
         for (const char* name : {"recording_coincident_pins.bin", "recording_hairline_triangle.bin",
-                                 "recording_huge_rest_length.bin"}) {
+                                 "recording_huge_rest_length.bin", "recording_fan_of_breaks.bin"}) {
             QFile file(dir.filePath(QString::fromLatin1(name)));
             QVERIFY(file.open(QIODevice::ReadOnly));
             const pf::RecordingLoad recording = pf::decodeRecording(file.readAll());
