@@ -373,7 +373,7 @@ void EditSession::appendEvents(Stroke& stroke, Index from) const {
     for (Index e = from; e < static_cast<Index>(s.events.size()); ++e) {
         const DamageEvent& ev = s.events[e];
         if (!ev.active) continue;
-        StrokeEvent se{e, ev.kind, ev.edge, 0.0, 0.0};
+        StrokeEvent se{e, ev.kind, ev.edge, 0.0, 0.0, ev.step};
         if (ev.kind == EventKind::Hinge) se.hingeRest = s.springs.rest[ev.springs[0]];
         if (ev.kind == EventKind::Break) se.creaseRest = s.springs.rest[ev.edge];
         stroke.events.push_back(se);
@@ -535,12 +535,12 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         if (se.kind == EventKind::Break) {
             if (!canBreak(s, se.edge)) continue;
             computeVertexNormals(s, normals);
-            se.event = breakEdge(s, se.edge, normals, w.params.psi, w.stepCount,
+            se.event = breakEdge(s, se.edge, normals, w.params.psi, se.step,
                                  keepsEdgeLengths(w.params.integrator));
             s.springs.rest[se.edge] = se.creaseRest; // the crease as the stroke left it
         } else {
             if (!canHinge(s, se.edge)) continue;
-            se.event = insertHinge(s, se.edge, se.hingeRest, w.stepCount);
+            se.event = insertHinge(s, se.edge, se.hingeRest, se.step);
         }
         ++reapplied;
     }

@@ -180,6 +180,10 @@ class EditSession {
         Index edge = kNone;
         double hingeRest = 0.0;
         double creaseRest = 0.0; // a break's crease: the length it broke at
+        // When it was made: a redo stamps it so, or the sheet's breaks in the last second
+        // (the editor's break rate) read every redone break as new (78 a second after a
+        // fold's redo, in a user's session).
+        std::int64_t step = 0;
     };
     // What the user saw: the sheet's motion state (its topology is the events' job).
     struct SheetLook {
