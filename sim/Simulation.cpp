@@ -143,7 +143,7 @@ StepStatus Simulation::step() {
         if (keepsEdgeLengths(p.integrator) && sheet.verts.size() > before) {
             const std::vector<Index> moved = relaxAroundNewVertices(sheet, before);
             if (integrator_->resolvesContacts()) keepOutOfContacts(w, moved);
-        } else if (integrator_->resolvesContacts()) {
+        } else if (integrator_->resolvesContacts() && sheet.verts.size() > before) {
             std::vector<Index> added;
             for (Index i = before; i < sheet.verts.size(); ++i) added.push_back(i);
             keepOutOfContacts(w, added);

@@ -42,7 +42,7 @@ inline constexpr int kProjectionHalvings = 4;
 inline constexpr double kProjectedStretch = 3e-3;
 // The projection couples every two constraints that meet at a vertex, so a vertex with
 // d of them puts a dense d × d block into J W Jᵀ. Paper's vertices have at most 35
-// springs of any kind (a sheet folded four times, crumple-cycles after 20 s); a
+// springs of any kind (a sheet folded three times, crumple-cycles after 20 s); a
 // recording the fuzzer made broke a 58 m edge into a fan of 1,867 springs round one
 // vertex, and each factorisation took a second. Past this many stretched edges at a
 // free vertex the step is left to the sub-steps.

@@ -412,7 +412,8 @@ class TestFoldTool : public QObject {
         QCOMPARE(s.fold(acrossTheMiddle()), FoldRefusal::None);
         runUntilLetGo(s);
         advanceSeconds(s, 1.0);
-        QCOMPARE(s.fold({Vec3(line, 0, -0.2), Vec3(line, 0, 0.2), kPi, mountain}), FoldRefusal::None);
+        QCOMPARE(s.fold({Vec3(line, 0, -0.2), Vec3(line, 0, 0.2), kPi, mountain}),
+                 FoldRefusal::None);
         QVERIFY(runUntilLetGo(s) > 0.0);
         advanceSeconds(s, 2.0);
         const double stretch = computeStats(s.world().sheet).maxStretch;
