@@ -59,7 +59,7 @@ Index breaksSince(const Sheet& sheet, std::int64_t firstStep) {
     Index count = 0;
     // The log is in step order: only its tail can be recent.
     for (auto it = sheet.events.rbegin(); it != sheet.events.rend() && it->step >= firstStep; ++it)
-        if (it->kind == EventKind::Break) ++count;
+        if (it->kind == EventKind::Break && it->active) ++count;
     return count;
 }
 

@@ -33,8 +33,10 @@ std::uint64_t editedStateHash(const Sheet& sheet);
 
 double totalMass(const Sheet& sheet);
 
-// Break events logged at `firstStep` or later, recovered ones included: how fast the
-// sheet is breaking (the editor shows it per second, so a user sees damage settle).
+// Break events logged at `firstStep` or later and still in the sheet: how fast the sheet
+// is breaking (the editor shows it per second, so a user sees damage settle). Only an
+// undo or a redo recovers a break, and what it took back is not damage the user sees
+// (the breaks of a stroke undone at once were counted for a second after the undo).
 Index breaksSince(const Sheet& sheet, std::int64_t firstStep);
 
 } // namespace pf

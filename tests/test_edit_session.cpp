@@ -261,6 +261,7 @@ class TestEditSession : public QObject {
         EditSession session(test::jacobiScene("press"));
         QCOMPARE(session.advance(24), StepStatus::Ok);
         const Sheet before = session.world().sheet;
+        const std::int64_t strokeStep = session.world().stepCount;
         const auto end = pushStroke(session, 0.0, 0.6);
         QVERIFY(end.has_value() && end->events > 0);
         const Topology left = topology(session.world().sheet);
@@ -275,6 +276,9 @@ class TestEditSession : public QObject {
         QVERIFY(undone.verts.x == before.verts.x);
         QVERIFY(undone.verts.v == before.verts.v);
         QVERIFY(undone.springs.rest == before.springs.rest);
+        // Nor does the editor's break rate still count the breaks the undo took back.
+        QVERIFY(breaksSince(seen, strokeStep) > 0);
+        QCOMPARE(breaksSince(undone, strokeStep), 0);
         // Redo gives back what was seen before the undo, settling included.
         QCOMPARE(session.redoStroke(end->stroke), recovered);
         QCOMPARE(topology(session.world().sheet), topology(seen));
