@@ -15,6 +15,7 @@
 
 #include <QTest>
 #include <QtEndian>
+#include <limits>
 #include <random>
 
 using namespace pf;
@@ -705,6 +706,59 @@ class TestEditSession : public QObject {
         QCOMPARE(freed->kind, EditSession::StrokeKind::Unpin);
         session.advance(24);
         QVERIFY2(V.x.back().y() < before - 1e-3, "the unpinned sheet did not fall");
+    }
+
+    // A sheet at rest sleeps, and costs almost nothing (docs/speed.md); the tool wakes it
+    // before it reaches the paper, and never passes into paper that sleeps. The desk is
+    // taken away under the sleeping sheet (which does not wake it), so that nothing but
+    // the paper can stop the tool pressed down through it.
+    void theToolWakesASleepingSheetBeforeItTouches() {
+        SceneOptions coarse;
+        coarse.resolution = 9;
+        const double radius = 0.03;
+        World w = makeEditorScene("press", coarse, radius);
+        w.params.integrator = "xpbd";
+        EditSession session(w);
+        const auto& V = session.world().sheet.verts;
+        for (int steps = 0; !session.simulation().asleep() && steps < 2400; steps += 10)
+            session.advance(10);
+        QVERIFY2(session.simulation().asleep(), "the sheet on the desk never came to rest");
+        session.simulation().world().groundEnabled = false;
+        session.setTool(Vec3(0.0, 0.1, 0.0), radius, true, false);
+        QCOMPARE(session.advance(24), StepStatus::Ok);
+        QVERIFY(session.simulation().asleep()); // a hovering tool wakes nothing
+        const double sheetAt = V.x[0].y();
+        int woke = -1, reached = -1;
+        double deepest = std::numeric_limits<double>::infinity();
+        for (int step = 0; step < 60; ++step) {
+            session.setTool(Vec3(0.0, -0.1, 0.0), radius, true, true);
+            QCOMPARE(session.advance(1), StepStatus::Ok);
+            // The tool meets the paper's triangles, mostly between vertices: each is
+            // sampled on a grid of points about a millimetre apart.
+            const SphereTool& sp = session.world().sphere;
+            double nearest = std::numeric_limits<double>::infinity();
+            constexpr int n = 24;
+            for (const Triangle& t : session.world().sheet.tris)
+                for (int i = 0; i <= n; ++i)
+                    for (int j = 0; i + j <= n; ++j) {
+                        const Vec3 p =
+                            (i * V.x[t.v[0]] + j * V.x[t.v[1]] + (n - i - j) * V.x[t.v[2]]) /
+                            double(n);
+                        nearest = std::min(nearest, (p - sp.center).norm() - sp.radius);
+                    }
+            deepest = std::min(deepest, nearest);
+            if (reached < 0 && nearest < kToolReach) reached = step;
+            if (woke < 0 && !session.simulation().asleep()) woke = step;
+        }
+        const double toolAt = session.world().sphere.center.y();
+        qInfo("woke at step %d, the tool reached the paper at step %d; the paper came %.3g mm "
+              "from the tool's surface at the closest; the tool went %.1f cm below where the "
+              "sheet slept",
+              woke, reached, 1e3 * deepest, 1e2 * (sheetAt - toolAt));
+        QVERIFY(toolAt < sheetAt - 0.05); // it went down through where the sheet was
+        QVERIFY(reached >= 0);
+        QVERIFY(woke >= 0 && woke < reached);
+        QVERIFY(deepest > -1e-9); // and never had paper inside it
     }
 
     // A script that lets its pins go wakes a sleeping sheet, as the user's unpin does (the
