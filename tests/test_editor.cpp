@@ -969,9 +969,29 @@ class TestEditor : public QObject {
             askedLevel = current;
             return 1;
         };
-        nextFile = dir.filePath(QStringLiteral("sheet.glb"));
+        // While the file dialog is open its event loop runs, and the frames the
+        // simulation publishes meanwhile replace the viewport's snapshot: the export
+        // must still have the sheet it was asked for (a user's exports were empty, or
+        // crashed, while the sheet moved). A name without a suffix gets .glb.
+        const SheetSnapshot* before = window->viewport()->snapshot();
+        QVERIFY(before);
+        const std::size_t askedTriangles = before->tris.size();
+        bool replaced = false;
+        window->chooseFile = [&](MainWindow::FileDialog) {
+            QElapsedTimer waited;
+            waited.start();
+            while (!replaced && waited.elapsed() < 5000) {
+                QTest::qWait(20);
+                replaced = window->viewport()->snapshot() != before;
+            }
+            QTest::qWait(100); // and a few more frames
+            return dir.filePath(QStringLiteral("sheet"));
+        };
         window->action("exportMesh")->trigger();
         QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        QVERIFY2(replaced, "no new frame while the dialog was open");
+        nextFile = dir.filePath(QStringLiteral("sheet.glb"));
+        window->chooseFile = [this](MainWindow::FileDialog) { return nextFile; };
         QCOMPARE(askedLevel, window->viewport()->renderOptions().subdivision);
         tinygltf::Model model;
         tinygltf::TinyGLTF loader;
@@ -979,8 +999,7 @@ class TestEditor : public QObject {
         QVERIFY2(loader.LoadBinaryFromFile(&model, &err, &warn, nextFile.toStdString()),
                  err.c_str());
         const auto& prim = model.meshes[0].primitives[0];
-        QCOMPARE(model.accessors[prim.indices].count,
-                 3 * 4 * window->viewport()->snapshot()->tris.size()); // level 1: 4 each
+        QCOMPARE(model.accessors[prim.indices].count, 3 * 4 * askedTriangles); // level 1: 4 each
         QVERIFY(prim.attributes.count("TEXCOORD_0"));
         QCOMPARE(model.images.size(), std::size_t(1));
         // glTF's factor is linear: sRGB 200/255 is 0.5776 linear.

@@ -662,6 +662,8 @@ QString MainWindow::chooseFileToWrite(FileDialog kind) {
         return path + QStringLiteral(".paperrec");
     case FileDialog::ExportImage:
         return path + QStringLiteral(".png");
+    case FileDialog::ExportMesh:
+        return path + QStringLiteral(".glb"); // the one that keeps the paper's look
     default:
         return path;
     }
@@ -762,12 +764,15 @@ void MainWindow::exportImage() {
 }
 
 void MainWindow::exportMesh() {
-    auto snap = viewport_->snapshot();
+    // Held: the dialogs below run the event loop, and the frames published meanwhile
+    // replace the viewport's snapshot (a raw pointer to it wrote empty meshes, or
+    // crashed, while the sheet moved).
+    const std::shared_ptr<const SheetSnapshot> snap = viewport_->sharedSnapshot();
     if (!snap) return;
     RenderOptions surface = viewport_->renderOptions();
     surface.subdivision = chooseMeshSubdivision(surface.subdivision);
     if (surface.subdivision < 0) return; // cancelled
-    const QString path = chooseFile(FileDialog::ExportMesh);
+    const QString path = chooseFileToWrite(FileDialog::ExportMesh);
     if (path.isEmpty()) return;
     MeshFormat format;
     if (!meshFormatForPath(path, &format)) {
