@@ -481,8 +481,8 @@
         <translation>Die Aufzeichnung konnte nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <source>Paused: the push acts once the simulation plays (Space or Step).</source>
-        <translation>Angehalten: Der Stoß wirkt, sobald die Simulation läuft (Leertaste oder Schritt).</translation>
+        <source>Paused: the push moves the paper only while the simulation runs (Space plays, Ctrl+. steps).</source>
+        <translation>Angehalten: Der Stoß bewegt das Papier nur, während die Simulation läuft (Leertaste spielt ab, Strg+. macht einen Schritt).</translation>
     </message>
     <message>
         <source>The image size is width x height, each from 16 to %1 pixels, such as 1920x1080.</source>
@@ -509,8 +509,8 @@
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
-        <translation>Angehalten: Das Greifen wirkt, sobald die Simulation läuft (Leertaste oder Schritt).</translation>
+        <source>Paused: the grab moves the paper only while the simulation runs (Space plays, Ctrl+. steps).</source>
+        <translation>Angehalten: Das Greifen bewegt das Papier nur, während die Simulation läuft (Leertaste spielt ab, Strg+. macht einen Schritt).</translation>
     </message>
     <message>
         <source>Rendering the image (%1 x %2)…</source>

@@ -476,8 +476,8 @@
         <translation>記録を保存できませんでした: %1</translation>
     </message>
     <message>
-        <source>Paused: the push acts once the simulation plays (Space or Step).</source>
-        <translation>一時停止中：押し込みはシミュレーションが動くと働きます（スペースまたはステップ）。</translation>
+        <source>Paused: the push moves the paper only while the simulation runs (Space plays, Ctrl+. steps).</source>
+        <translation>一時停止中：押し込みはシミュレーションの実行中にだけ紙を動かします（Space で再生、Ctrl+. で1ステップ）。</translation>
     </message>
     <message>
         <source>The image size is width x height, each from 16 to %1 pixels, such as 1920x1080.</source>
@@ -504,8 +504,8 @@
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
-        <translation>一時停止中：つかむ操作はシミュレーションの再生後に反映されます（Space またはステップ）。</translation>
+        <source>Paused: the grab moves the paper only while the simulation runs (Space plays, Ctrl+. steps).</source>
+        <translation>一時停止中：つかむ操作はシミュレーションの実行中にだけ紙を動かします（Space で再生、Ctrl+. で1ステップ）。</translation>
     </message>
     <message>
         <source>Rendering the image (%1 x %2)…</source>

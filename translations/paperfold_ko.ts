@@ -476,8 +476,8 @@
         <translation>기록을 저장할 수 없습니다: %1</translation>
     </message>
     <message>
-        <source>Paused: the push acts once the simulation plays (Space or Step).</source>
-        <translation>일시 정지됨: 누르기는 시뮬레이션이 재생되면 작동합니다 (Space 또는 단계).</translation>
+        <source>Paused: the push moves the paper only while the simulation runs (Space plays, Ctrl+. steps).</source>
+        <translation>일시 정지됨: 누르기는 시뮬레이션이 실행되는 동안에만 종이를 움직입니다 (Space 재생, Ctrl+. 한 단계).</translation>
     </message>
     <message>
         <source>The image size is width x height, each from 16 to %1 pixels, such as 1920x1080.</source>
@@ -504,8 +504,8 @@
         <translation>도구(&amp;T)</translation>
     </message>
     <message>
-        <source>Paused: the grab acts once the simulation plays (Space or Step).</source>
-        <translation>일시 정지됨: 잡기는 시뮬레이션이 재생되면 적용됩니다 (Space 또는 한 단계).</translation>
+        <source>Paused: the grab moves the paper only while the simulation runs (Space plays, Ctrl+. steps).</source>
+        <translation>일시 정지됨: 잡기는 시뮬레이션이 실행되는 동안에만 종이를 움직입니다 (Space 재생, Ctrl+. 한 단계).</translation>
     </message>
     <message>
         <source>Rendering the image (%1 x %2)…</source>

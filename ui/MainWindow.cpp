@@ -171,12 +171,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         if (playing_) return;
         switch (input_->tool()) {
         case ViewportInput::Tool::Push:
-            statusBar()->showMessage(
-                tr("Paused: the push acts once the simulation plays (Space or Step)."), 5000);
+            statusBar()->showMessage(tr("Paused: the push moves the paper only while the "
+                                        "simulation runs (Space plays, Ctrl+. steps)."),
+                                     5000);
             break;
         case ViewportInput::Tool::Grab:
-            statusBar()->showMessage(
-                tr("Paused: the grab acts once the simulation plays (Space or Step)."), 5000);
+            statusBar()->showMessage(tr("Paused: the grab moves the paper only while the "
+                                        "simulation runs (Space plays, Ctrl+. steps)."),
+                                     5000);
             break;
         case ViewportInput::Tool::Pin:
             break; // a pin holds at once
