@@ -588,6 +588,33 @@ class TestEditor : public QObject {
         QVERIFY(installLanguage(QStringLiteral("en")));
     }
 
+    // Steps already in the History are said again in the language the user switches to
+    // (a user's "phi ändern" and "Stoß (112 Brüche oder Falten)" stayed German in
+    // Japanese, Korean and English), and a parameter goes by its symbol or its name.
+    void theHistorySwitchesLanguageWithTheWindow() {
+        QVERIFY(installLanguage(QStringLiteral("de")));
+        window->panel()->phiSlider()->setValue(80);
+        window->solverPanel()->integratorBox()->setCurrentText(QStringLiteral("jacobi"));
+        window->undoStack()->push(new StrokeCommand(
+            window->simulation(), -1, 3, static_cast<int>(EditSession::StrokeKind::Push)));
+        const auto texts = [this] {
+            QStringList t;
+            for (int i = 0; i < window->undoStack()->count(); ++i)
+                t << window->undoStack()->command(i)->text();
+            return t;
+        };
+        QCOMPARE(texts(),
+                 QStringList({QStringLiteral("φ ändern"), QStringLiteral("Integrator ändern"),
+                              QStringLiteral("Drücken (3 Brüche oder Falten)")}));
+        QVERIFY(installLanguage(QStringLiteral("en")));
+        QTRY_COMPARE(texts(),
+                     QStringList({QStringLiteral("Change φ"), QStringLiteral("Change integrator"),
+                                  QStringLiteral("Push (3 breaks or folds)")}));
+        QVERIFY(installLanguage(QStringLiteral("ja")));
+        QTRY_VERIFY(texts()[2] != QStringLiteral("Push (3 breaks or folds)"));
+        QVERIFY(installLanguage(QStringLiteral("en")));
+    }
+
     // In every language each text the window shows is translated (differs from the
     // English one, but for names that are the same in both) and every label fits.
     void everyTextIsTranslatedAndFitsInEachLanguage_data() {

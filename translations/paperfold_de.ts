@@ -37,13 +37,41 @@
     <message numerus="yes">
         <source>Push (%n break(s) or fold(s))</source>
         <translation>
-            <numerusform>Stoß (%n Bruch oder Falte)</numerusform>
-            <numerusform>Stoß (%n Brüche oder Falten)</numerusform>
+            <numerusform>Drücken (%n Bruch oder Falte)</numerusform>
+            <numerusform>Drücken (%n Brüche oder Falten)</numerusform>
         </translation>
     </message>
     <message>
         <source>Change %1</source>
         <translation>%1 ändern</translation>
+    </message>
+    <message>
+        <source>stretch stiffness</source>
+        <translation>Dehnsteifigkeit</translation>
+    </message>
+    <message>
+        <source>bending stiffness</source>
+        <translation>Biegesteifigkeit</translation>
+    </message>
+    <message>
+        <source>integrator</source>
+        <translation>Integrator</translation>
+    </message>
+    <message>
+        <source>paper</source>
+        <translation>Papier</translation>
+    </message>
+    <message>
+        <source>Jacobi sweeps</source>
+        <translation>Jacobi-Durchläufe</translation>
+    </message>
+    <message>
+        <source>steps per second</source>
+        <translation>Schritte pro Sekunde</translation>
+    </message>
+    <message>
+        <source>gravity outside the filter</source>
+        <translation>Schwerkraft außerhalb des Filters</translation>
     </message>
     <message>
         <source>Settle</source>
@@ -482,7 +510,7 @@
     </message>
     <message>
         <source>Paused: the push moves the paper only while the simulation runs (Space plays, Ctrl+. steps).</source>
-        <translation>Angehalten: Der Stoß bewegt das Papier nur, während die Simulation läuft (Leertaste spielt ab, Strg+. macht einen Schritt).</translation>
+        <translation>Angehalten: Das Drücken bewegt das Papier nur, während die Simulation läuft (Leertaste spielt ab, Strg+. macht einen Schritt).</translation>
     </message>
     <message>
         <source>The image size is width x height, each from 16 to %1 pixels, such as 1920x1080.</source>

@@ -45,6 +45,34 @@
         <translation>%1 を変更</translation>
     </message>
     <message>
+        <source>stretch stiffness</source>
+        <translation>引張り剛性</translation>
+    </message>
+    <message>
+        <source>bending stiffness</source>
+        <translation>曲げ剛性</translation>
+    </message>
+    <message>
+        <source>integrator</source>
+        <translation>積分法</translation>
+    </message>
+    <message>
+        <source>paper</source>
+        <translation>紙</translation>
+    </message>
+    <message>
+        <source>Jacobi sweeps</source>
+        <translation>ヤコビ反復回数</translation>
+    </message>
+    <message>
+        <source>steps per second</source>
+        <translation>毎秒のステップ数</translation>
+    </message>
+    <message>
+        <source>gravity outside the filter</source>
+        <translation>フィルター外の重力</translation>
+    </message>
+    <message>
         <source>Settle</source>
         <translation>静止</translation>
     </message>

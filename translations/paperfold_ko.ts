@@ -45,6 +45,34 @@
         <translation>%1 변경</translation>
     </message>
     <message>
+        <source>stretch stiffness</source>
+        <translation>인장 강성</translation>
+    </message>
+    <message>
+        <source>bending stiffness</source>
+        <translation>굽힘 강성</translation>
+    </message>
+    <message>
+        <source>integrator</source>
+        <translation>적분기</translation>
+    </message>
+    <message>
+        <source>paper</source>
+        <translation>종이</translation>
+    </message>
+    <message>
+        <source>Jacobi sweeps</source>
+        <translation>야코비 반복 횟수</translation>
+    </message>
+    <message>
+        <source>steps per second</source>
+        <translation>초당 단계 수</translation>
+    </message>
+    <message>
+        <source>gravity outside the filter</source>
+        <translation>필터 밖의 중력</translation>
+    </message>
+    <message>
         <source>Settle</source>
         <translation>안정</translation>
     </message>

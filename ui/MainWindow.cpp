@@ -484,7 +484,12 @@ void MainWindow::createDocks() {
 
 void MainWindow::retranslate() {
     ActionTexts::apply(this);
-    undo_->setUndoLimit(0);
+    // The History's steps were named in the language of their time. (QUndoStack hands
+    // them out const; they are ours, made with new.)
+    for (int i = 0; i < undo_->count(); ++i)
+        if (auto* step = dynamic_cast<const EditorCommand*>(undo_->command(i)))
+            const_cast<EditorCommand*>(step)->retranslate();
+    undoView_->viewport()->update();
     fileMenu_->setTitle(tr("&File"));
     newMenu_->setTitle(tr("&New"));
     recentMenu_->setTitle(tr("Open &Recent"));
