@@ -1395,6 +1395,21 @@ class TestEditor : public QObject {
         QVERIFY(window->statusBar()->currentMessage().contains(QStringLiteral("longer line")));
         QCOMPARE(window->undoStack()->count(), 0);
         QVERIFY(!settledStatus(*window).folding);
+        // What the user does next ends the message: a new step, an undo (a user saw a
+        // refusal stand for seconds after a successful undo), or play after a pause.
+        window->panel()->phiSlider()->setValue(55);
+        QCOMPARE(window->statusBar()->currentMessage(), QString());
+        QTest::mouseClick(view, Qt::LeftButton, {}, at);
+        QVERIFY(waitForCount(answered, 2));
+        QVERIFY(window->statusBar()->currentMessage().contains(QStringLiteral("longer line")));
+        window->undoStack()->undo();
+        QCOMPARE(window->statusBar()->currentMessage(), QString());
+        window->action("play")->setChecked(false);
+        QTest::mouseClick(view, Qt::LeftButton, {}, at);
+        QVERIFY(waitForCount(answered, 3));
+        QVERIFY(!window->statusBar()->currentMessage().isEmpty());
+        window->action("play")->setChecked(true);
+        QCOMPARE(window->statusBar()->currentMessage(), QString());
     }
 
     void closingAModifiedSheetAsks() {

@@ -199,8 +199,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         statusBar()->showMessage(foldAnswerText(static_cast<FoldRefusal>(refusal)), 8000);
         if (refusal == int(FoldRefusal::None)) setFoldUnderWay(true);
     });
-    // The stack enables its own actions whenever it moves (a parameter change, say).
-    connect(undo_, &QUndoStack::indexChanged, this, [this] { gateUndo(); });
+    // The stack enables its own actions whenever it moves (a parameter change, say). A
+    // message about what came before is over too (a fold's refusal stood for 8 s after
+    // an undo); what a new step says is shown after it is pushed.
+    connect(undo_, &QUndoStack::indexChanged, this, [this] {
+        statusBar()->clearMessage();
+        gateUndo();
+    });
     // An undo or redo lets go of a held grab (EditSession); the hand follows.
     connect(sim_.get(), &SimulationThread::strokeUndone, input_, &ViewportInput::letGo);
     connect(sim_.get(), &SimulationThread::strokeRedone, input_, &ViewportInput::letGo);
@@ -319,6 +324,7 @@ void MainWindow::createActions() {
     play->setChecked(true);
     connect(play, &QAction::toggled, this, [this](bool on) {
         playing_ = on;
+        if (on) statusBar()->clearMessage(); // "Paused: …" and the like are over
         sim_->setPlaying(on);
         action("play")->setIcon(
             style()->standardIcon(on ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
