@@ -288,7 +288,10 @@ void MainWindow::createActions() {
                 const QString path = file_.isEmpty() ? chooseFileToWrite(FileDialog::Save) : file_;
                 if (!path.isEmpty()) saveFile(path);
             });
-    connect(make("saveAs", QKeySequence::SaveAs), &QAction::triggered, this, [this] {
+    QAction* saveAs = make("saveAs", QKeySequence::SaveAs);
+    // Outside KDE and GNOME (a bare X server) Qt knows no Save As key.
+    if (saveAs->shortcut().isEmpty()) saveAs->setShortcut(QKeySequence(tr("Ctrl+Shift+S")));
+    connect(saveAs, &QAction::triggered, this, [this] {
         const QString path = chooseFileToWrite(FileDialog::Save);
         if (!path.isEmpty()) saveFile(path);
     });
