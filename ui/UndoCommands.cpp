@@ -4,8 +4,32 @@
 #include "SimulationThread.h"
 
 #include <QCoreApplication>
+#include <utility>
 
 namespace pf {
+
+namespace {
+
+// The panels name a parameter by a fixed key; the History says it in the user's words.
+QString parameterName(const QString& key) {
+    static const std::pair<const char*, const char*> symbols[] = {
+        {"phi", "φ"}, {"psi", "ψ"}, {"sigma", "σ"}};
+    static const std::pair<const char*, const char*> words[] = {
+        {"stiffness", QT_TRANSLATE_NOOP("UndoCommands", "stretch stiffness")},
+        {"bending", QT_TRANSLATE_NOOP("UndoCommands", "bending stiffness")},
+        {"integrator", QT_TRANSLATE_NOOP("UndoCommands", "integrator")},
+        {"material", QT_TRANSLATE_NOOP("UndoCommands", "paper")},
+        {"iterations", QT_TRANSLATE_NOOP("UndoCommands", "Jacobi sweeps")},
+        {"dt", QT_TRANSLATE_NOOP("UndoCommands", "steps per second")},
+        {"gravity", QT_TRANSLATE_NOOP("UndoCommands", "gravity outside the filter")}};
+    for (const auto& [k, symbol] : symbols)
+        if (key == QLatin1String(k)) return QString::fromUtf8(symbol);
+    for (const auto& [k, word] : words)
+        if (key == QLatin1String(k)) return QCoreApplication::translate("UndoCommands", word);
+    return key;
+}
+
+} // namespace
 
 StrokeCommand::StrokeCommand(SimulationThread* sim, int stroke, int events, int kind)
     : sim_(sim), stroke_(stroke), events_(events), kind_(kind) {
@@ -63,29 +87,7 @@ ParameterCommand::ParameterCommand(const SimParams& before, const SimParams& aft
 }
 
 void ParameterCommand::retranslate() {
-    // The panels name a parameter by a fixed key; the History says it in the user's words.
-    QString name = what_;
-    if (what_ == QLatin1String("phi"))
-        name = QStringLiteral("φ");
-    else if (what_ == QLatin1String("psi"))
-        name = QStringLiteral("ψ");
-    else if (what_ == QLatin1String("sigma"))
-        name = QStringLiteral("σ");
-    else if (what_ == QLatin1String("stiffness"))
-        name = QCoreApplication::translate("UndoCommands", "stretch stiffness");
-    else if (what_ == QLatin1String("bending"))
-        name = QCoreApplication::translate("UndoCommands", "bending stiffness");
-    else if (what_ == QLatin1String("integrator"))
-        name = QCoreApplication::translate("UndoCommands", "integrator");
-    else if (what_ == QLatin1String("material"))
-        name = QCoreApplication::translate("UndoCommands", "paper");
-    else if (what_ == QLatin1String("iterations"))
-        name = QCoreApplication::translate("UndoCommands", "Jacobi sweeps");
-    else if (what_ == QLatin1String("dt"))
-        name = QCoreApplication::translate("UndoCommands", "steps per second");
-    else if (what_ == QLatin1String("gravity"))
-        name = QCoreApplication::translate("UndoCommands", "gravity outside the filter");
-    setText(QCoreApplication::translate("UndoCommands", "Change %1").arg(name));
+    setText(QCoreApplication::translate("UndoCommands", "Change %1").arg(parameterName(what_)));
 }
 
 void ParameterCommand::undo() {
