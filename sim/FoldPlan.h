@@ -30,12 +30,13 @@ struct FoldRequest {
 
 enum class FoldRefusal : std::uint8_t {
     None,
-    ShortLine,     // shorter than kMinFoldLine
-    OffSheet,      // no paper along the line
-    NothingToFold, // no paper beyond the band on one side, or none on the other
-    DeskInTheWay,  // the flap would pass through the ground, and pins hold the sheet down
-    BadAngle,      // not in (0, π]
-    Busy           // another edit is under way (EditSession)
+    ShortLine,      // shorter than kMinFoldLine
+    OffSheet,       // no paper along the line
+    NothingToFold,  // no paper beyond the band on one side, or none on the other
+    DeskInTheWay,   // the flap would pass through the ground, and pins hold the sheet down
+    BadAngle,       // not in (0, π]
+    Busy,           // another edit is under way (EditSession)
+    PinnedBothSides // pins hold paper on both sides of the line: there is no flap to carry
 };
 
 struct FoldPlan {
@@ -61,7 +62,9 @@ constexpr double kFoldLift = 0.003; // m
 // A fold that must lift the sheet off the desk lifts it, and puts it down, in this time.
 constexpr double kFoldLiftSeconds = 0.5; // s
 // Vertices closer to the line than this stay free: the crease forms there.
-constexpr double kFoldBand = 0.01;    // m
+constexpr double kFoldBand = 0.01; // m
+// A pin this close to the line is on it: the crease may run through it.
+constexpr double kPinOnLine = 0.001;  // m
 constexpr double kMinFoldLine = 0.01; // m
 // Paper off the plane the fold turns in by more than this share of its distance from
 // the line stays free too: held, it would be carried away from the line and stretch the

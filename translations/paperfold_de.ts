@@ -597,6 +597,10 @@
         <translation>Nicht gefaltet: So ginge die Lasche durch den Tisch, und angeheftete Stellen halten das Papier fest. Falten Sie andersherum (Tal oder Berg) oder lösen Sie die Anheftung.</translation>
     </message>
     <message>
+        <source>Not folded: pins hold the paper on both sides of the line. Unpin one side: the pinned side stays, the other is folded over.</source>
+        <translation>Nicht gefaltet: Angeheftete Stellen halten das Papier auf beiden Seiten der Linie fest. Lösen Sie eine Seite: Die angeheftete Seite bleibt liegen, die andere wird umgefaltet.</translation>
+    </message>
+    <message>
         <source>Not now: a fold is under way.</source>
         <translation>Nicht jetzt: Eine Faltung läuft noch.</translation>
     </message>

@@ -592,6 +592,10 @@
         <translation>折れません：この向きでは折り返しが机を突き抜け、ピンが紙を押さえているため持ち上げられません。反対向き（谷折りまたは山折り）に折るか、ピンを外してください。</translation>
     </message>
     <message>
+        <source>Not folded: pins hold the paper on both sides of the line. Unpin one side: the pinned side stays, the other is folded over.</source>
+        <translation>折れません：線の両側でピンが紙を押さえています。片側のピンを外してください。ピンのある側はそのまま残り、もう一方が折り返されます。</translation>
+    </message>
+    <message>
         <source>Not now: a fold is under way.</source>
         <translation>今はできません：折りの途中です。</translation>
     </message>

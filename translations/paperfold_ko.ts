@@ -592,6 +592,10 @@
         <translation>접지 않음: 이 방향이면 접히는 부분이 책상을 뚫고 지나가는데, 고정점이 종이를 붙잡고 있어 들어 올릴 수 없습니다. 반대로 접거나 (골접기 또는 산접기) 고정을 푸세요.</translation>
     </message>
     <message>
+        <source>Not folded: pins hold the paper on both sides of the line. Unpin one side: the pinned side stays, the other is folded over.</source>
+        <translation>접지 않음: 선의 양쪽에서 고정점이 종이를 붙잡고 있습니다. 한쪽의 고정을 푸세요. 고정된 쪽은 그대로 있고 다른 쪽이 접힙니다.</translation>
+    </message>
+    <message>
         <source>Not now: a fold is under way.</source>
         <translation>지금은 할 수 없습니다: 접는 중입니다.</translation>
     </message>

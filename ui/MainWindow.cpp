@@ -577,6 +577,9 @@ QString MainWindow::foldAnswerText(FoldRefusal refusal) {
                   "paper down. Fold the other way (Valley or Mountain), or unpin the paper.");
     case FoldRefusal::BadAngle:
         return tr("Not folded: the angle must lie between 1° and 180°.");
+    case FoldRefusal::PinnedBothSides:
+        return tr("Not folded: pins hold the paper on both sides of the line. Unpin one side: "
+                  "the pinned side stays, the other is folded over.");
     case FoldRefusal::Busy:
         return tr("Not folded: another edit is under way.");
     }
