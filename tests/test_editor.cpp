@@ -32,6 +32,7 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -40,6 +41,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QUndoView>
@@ -978,6 +980,28 @@ class TestEditor : public QObject {
         window->action("exportImage")->trigger();
         QVERIFY(lastError.isEmpty());
         QCOMPARE(asked, 0);
+    }
+
+    // The render of a large image cannot be stopped, so its dialog cannot be sent away:
+    // a user's Escape closed it, and the image was written 9 s later all the same.
+    void theImageExportDialogStaysUntilTheImageIsWritten() {
+        QTemporaryDir dir;
+        nextFile = dir.filePath(QStringLiteral("big.png"));
+        window->chooseImageSize = [] { return QSize(4096, 4096); };
+        bool shown = false, stayed = false;
+        QTimer::singleShot(1000, window.get(), [&] {
+            auto* dialog = window->findChild<QProgressDialog*>();
+            shown = dialog && dialog->isVisible();
+            if (!shown) return;
+            QTest::keyClick(dialog, Qt::Key_Escape);
+            dialog->close();
+            stayed = dialog->isVisible();
+        });
+        window->action("exportImage")->trigger();
+        QVERIFY2(shown, "the image was written before the dialog showed");
+        QVERIFY(stayed);
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        QCOMPARE(QImage(nextFile).size(), QSize(4096, 4096));
     }
 
     // View ▸ Paper: a colour and the paper grain reach the view, Export Image (on its

@@ -31,6 +31,7 @@
 #include <QDockWidget>
 #include <QEventLoop>
 #include <QFileInfo>
+#include <QKeyEvent>
 #include <QMenuBar>
 #include <QProgressDialog>
 #include <QSettings>
@@ -51,6 +52,21 @@
 namespace pf {
 
 namespace {
+
+// Swallows what would close a dialog that must stay until its work is done.
+class StaysOpen : public QObject {
+  protected:
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        if (event->type() == QEvent::Close) {
+            event->ignore();
+            return true;
+        }
+        if (event->type() == QEvent::KeyPress &&
+            static_cast<QKeyEvent*>(event)->key() == Qt::Key_Escape)
+            return true;
+        return QObject::eventFilter(watched, event);
+    }
+};
 
 const char* const kOverlayActions[] = {"overlay.springs", "overlay.probability", "overlay.strain",
                                        "overlay.breaks", "overlay.wireframe"};
@@ -754,6 +770,10 @@ void MainWindow::exportImage() {
         this);
     progress.setWindowTitle(tr("Export Image"));
     progress.setWindowModality(Qt::WindowModal);
+    // The render cannot be stopped (OSMesa has no way to), so the dialog cannot be sent
+    // away either: Escape closed it, and the image was written seconds later anyway.
+    StaysOpen staysOpen;
+    progress.installEventFilter(&staysOpen);
     progress.setMinimumDuration(400); // no flash for a small image
     progress.setValue(0);             // starts the minimum-duration timer of a busy indicator
     exporting_ = true;                // until then Export Image and closing the window wait
