@@ -292,17 +292,20 @@ void SheetRenderer::buildLines(const SheetSnapshot& snap, const RenderOptions& o
                 pushLine(lineData_, x[snap.springEnds[s][0]], x[snap.springEnds[s][1]], c);
             }
         });
+    // A small three-axis cross on each pin, in the pin's red, and on each vertex a hand
+    // holds for a while (a fold's carry) in blue.
+    const auto crosses = [&](const std::vector<Index>& vertices, const float(&c)[4]) {
+        const double arm = 0.003; // m
+        for (Index i : vertices)
+            for (int axis = 0; axis < 3; ++axis) {
+                const Vec3 d = arm * Vec3::Unit(axis);
+                pushLine(lineData_, x[i] - d, x[i] + d, c);
+            }
+    };
     if (options.pins && !snap.pinned.empty())
-        batch(2.0f, [&] {
-            // A small three-axis cross on each pin, in the pin's red.
-            const float c[4] = {0.85f, 0.12f, 0.20f, 1.0f};
-            const double arm = 0.003; // m
-            for (Index i : snap.pinned)
-                for (int axis = 0; axis < 3; ++axis) {
-                    const Vec3 d = arm * Vec3::Unit(axis);
-                    pushLine(lineData_, x[i] - d, x[i] + d, c);
-                }
-        });
+        batch(2.0f, [&] { crosses(snap.pinned, {0.85f, 0.12f, 0.20f, 1.0f}); });
+    if (options.pins && !snap.held.empty())
+        batch(2.0f, [&] { crosses(snap.held, {0.15f, 0.35f, 0.85f, 1.0f}); });
     if (options.overlays & OverlayRecentBreaks)
         batch(2.2f, [&] {
             const float c[4] = {1.0f, 0.0f, 0.75f, 1.0f};

@@ -10,7 +10,7 @@ bool drawsTheSame(const SheetSnapshot& a, const SheetSnapshot& b) {
            a.springKind == b.springKind && a.breakable == b.breakable &&
            a.breakProbability == b.breakProbability && a.strain == b.strain &&
            a.recentlyBroken == b.recentlyBroken && a.vertexStrain == b.vertexStrain &&
-           a.pinned == b.pinned && a.sphere.center == b.sphere.center &&
+           a.pinned == b.pinned && a.held == b.held && a.sphere.center == b.sphere.center &&
            a.sphere.radius == b.sphere.radius && a.sphere.active == b.sphere.active &&
            a.sphere.hovering == b.sphere.hovering && a.groundEnabled == b.groundEnabled &&
            a.groundHeight == b.groundHeight;
@@ -32,8 +32,15 @@ SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds) {
     snap.strain.resize(static_cast<std::size_t>(S.size()));
     snap.recentlyBroken.assign(static_cast<std::size_t>(S.size()), 0);
     snap.vertexStrain.assign(x.size(), 0.0f);
+    // A hand that lets go (the Fold tool's carry) is not a pin: its vertices are marked
+    // apart (a user could not tell a carried flap's crosses from the pins they had set).
+    std::vector<std::uint8_t> byHand(static_cast<std::size_t>(s.verts.size()), 0);
+    for (const PinGroup& g : world.script.pins)
+        if (std::isfinite(g.release) && world.time < g.release)
+            for (Index i : g.vertices)
+                if (i >= 0 && i < s.verts.size()) byHand[i] = 1;
     for (Index i = 0; i < s.verts.size(); ++i)
-        if (s.verts.pinned[i]) snap.pinned.push_back(i);
+        if (s.verts.pinned[i]) (byHand[i] ? snap.held : snap.pinned).push_back(i);
     for (Index k = 0; k < S.size(); ++k) {
         const Index a = S.a[k], b = S.b[k];
         snap.springEnds[k] = {a, b};

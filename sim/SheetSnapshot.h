@@ -21,6 +21,7 @@ struct SheetSnapshot {
     std::vector<std::uint8_t> recentlyBroken; // per spring: part of a break in the last second
     std::vector<float> vertexStrain;          // per vertex: max |strain| of its structural springs
     std::vector<Index> pinned;                // the vertices that stand still (pins, a grab)
+    std::vector<Index> held; // held for a while by a scripted hand that lets go (a fold's carry)
     SphereTool sphere;
     bool groundEnabled = true;
     double groundHeight = 0.0;

@@ -8,6 +8,7 @@
 #include "RecordingFile.h"
 #include "Scenes.h"
 #include "SheetFile.h"
+#include "SheetSnapshot.h"
 #include "SheetStats.h"
 
 #include <QTest>
@@ -478,6 +479,22 @@ class TestFoldTool : public QObject {
                  FoldRefusal::PinnedBothSides);
         QVERIFY(!s.folding());
         QVERIFY(V.x == before);
+    }
+
+    void theCarriedFlapIsNotMarkedAsPinned() {
+        // The carry holds the flap by a hand that lets go; a user could not tell its red
+        // crosses from the pins they had set. Pins stay pins.
+        EditSession s = editorSession();
+        QVERIFY(s.pin(s.world().sheet.verts.x[0], 0.005));
+        QCOMPARE(s.fold(acrossTheMiddle()), FoldRefusal::None);
+        QCOMPARE(s.advance(10), StepStatus::Ok);
+        const SheetSnapshot during = makeSnapshot(s.simulation());
+        QCOMPARE(during.pinned, std::vector<Index>{0});
+        QVERIFY(during.held.size() > 100);
+        runUntilLetGo(s);
+        const SheetSnapshot after = makeSnapshot(s.simulation());
+        QCOMPARE(after.pinned, std::vector<Index>{0});
+        QVERIFY(after.held.empty());
     }
 
     void whatCannotBeFoldedIsRefusedWithItsReason() {

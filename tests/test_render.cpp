@@ -272,6 +272,23 @@ class TestRender : public QObject {
         options.pins = true;
         const int marked = redPixels(renderer->render(snap, camera, options));
         QVERIFY2(marked > 5 * int(snap.pinned.size()), qPrintable(QString::number(marked)));
+        // What a hand holds for a while (a fold's carry) is marked in blue, not pin red.
+        auto bluePixels = [](const QImage& image) {
+            int n = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor p = image.pixelColor(x, y);
+                    n += p.blue() > 150 && p.red() < 90 && p.green() < 140 ? 1 : 0;
+                }
+            return n;
+        };
+        const int blueBefore = bluePixels(renderer->render(snap, camera, options));
+        snap.held.swap(snap.pinned);
+        snap.serial = 0; // another picture: the renderer keeps lines per serial
+        const QImage handHeld = renderer->render(snap, camera, options);
+        QCOMPARE(redPixels(handHeld), 0);
+        QVERIFY2(bluePixels(handHeld) > blueBefore + 5 * int(snap.held.size()),
+                 qPrintable(QString::number(bluePixels(handHeld))));
     }
 
     void overlayNamesParse() {
