@@ -9,17 +9,15 @@
 namespace pf {
 
 // A fold along a line drawn across the sheet: the part on one side of the line (the
-// lighter one, the flap) is carried round the line toward the viewer (a valley fold: seen
-// from there the crease is a valley) or away (a mountain fold), flat onto the rest,
-// held there so that the crease is pressed, opened back to `angle` and let go, as a
-// hand folds paper: a crease that was never pressed flat springs open. Where the flap
-// would pass through the desk (a mountain fold of paper lying face up), the sheet is
-// lifted off it first and put down again once folded. The paper must lie within 2 cm of
-// the segment drawn; the fold is then along the whole straight line through it, as on
-// paper. Nothing is rotated rigidly into
-// place: the flap is carried as a hand carries it, and the crease forms in the band
-// along the line, where the paper bends, through the model's own breaks and hinges
-// (docs/model.md, "The Fold tool").
+// flap: the lighter one, or the one without pins) is carried round the line toward the viewer (a
+// valley fold: seen from there the crease is a valley) or away (a mountain fold), flat onto the
+// rest, held there so that the crease is pressed, opened back to `angle` and let go, as a hand
+// folds paper: a crease that was never pressed flat springs open. Where the flap would pass through
+// the desk (a mountain fold of paper lying face up), the sheet is lifted off it first and put down
+// again once folded. The paper must lie within 2 cm of the segment drawn; the fold is then along
+// the whole straight line through it, as on paper. Nothing is rotated rigidly into place: the flap
+// is carried as a hand carries it, and the crease forms in the band along the line, where the paper
+// bends, through the model's own breaks and hinges (docs/model.md, "The Fold tool").
 struct FoldRequest {
     Vec3 from = Vec3::Zero(), to = Vec3::Zero();
     double angle = std::numbers::pi; // radians, in (0, π]

@@ -43,7 +43,8 @@ void ActionTexts::apply(const QObject* window) {
         tr("Pin: a click pins the paper around the point, or frees it if it is pinned; "
            "Ctrl + wheel sizes the region (I)"));
     set("tool.fold", tr("&Fold"),
-        tr("Fold: draw a line across the paper; the lighter side is carried round it, "
+        tr("Fold: draw a line across the paper; the lighter side (or the side without pins) is "
+           "carried round it, "
            "pressed flat, opened to the angle set in the Parameters panel and let go (L)"));
     set("overlay.springs", tr("&Spring kinds"));
     set("overlay.probability", tr("&Break probability"));

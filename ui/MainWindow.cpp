@@ -200,8 +200,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             break; // a pin holds at once
         case ViewportInput::Tool::Fold:
             statusBar()->showMessage(
-                tr("Paused: the fold is carried round once the simulation plays (Space or "
-                   "Step)."),
+                tr("Paused: the fold is carried round once the simulation runs (Space plays, "
+                   "Ctrl+. steps)."),
                 5000);
             break;
         }

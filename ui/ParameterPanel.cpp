@@ -252,7 +252,8 @@ void ParameterPanel::retranslate() {
     depth_.spin->setSuffix(QStringLiteral(" %"));
     foldLabel_->setText(tr("Fold"));
     foldLabel_->setToolTip(
-        tr("The Fold tool (L): draw a line across the paper; the lighter side is carried round "
+        tr("The Fold tool (L): draw a line across the paper; the lighter side (or the side without "
+           "pins) is carried round "
            "it, pressed flat, opened to this angle and let go. A valley fold turns the flap up "
            "toward you, a mountain fold away from you, under the paper."));
     foldKind_->setItemText(0, tr("Valley"));

@@ -9,8 +9,8 @@ namespace pf {
 
 class SimulationThread;
 
-// An editor step whose text the History and the Edit menu show: said again in a new
-// language when the user switches (it is made in the language of its time).
+// An editor step whose text the History shows: said again in a new language when the
+// user switches (it is made in the language of its time).
 class EditorCommand : public QUndoCommand {
   public:
     virtual void retranslate() = 0;
