@@ -989,15 +989,20 @@ class TestEditor : public QObject {
         nextFile = dir.filePath(QStringLiteral("big.png"));
         window->chooseImageSize = [] { return QSize(4096, 4096); };
         bool shown = false, stayed = false;
-        QTimer::singleShot(1000, window.get(), [&] {
+        // Watched every 20 ms for the dialog to show (after 0.4 s; the render takes
+        // about 2 s on this project's machine).
+        QTimer watch;
+        connect(&watch, &QTimer::timeout, window.get(), [&] {
             auto* dialog = window->findChild<QProgressDialog*>();
-            shown = dialog && dialog->isVisible();
-            if (!shown) return;
+            if (shown || !dialog || !dialog->isVisible()) return;
+            shown = true;
             QTest::keyClick(dialog, Qt::Key_Escape);
             dialog->close();
             stayed = dialog->isVisible();
         });
+        watch.start(20);
         window->action("exportImage")->trigger();
+        watch.stop();
         QVERIFY2(shown, "the image was written before the dialog showed");
         QVERIFY(stayed);
         QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
@@ -1030,15 +1035,20 @@ class TestEditor : public QObject {
         const SheetSnapshot* before = window->viewport()->snapshot();
         QVERIFY(before);
         const std::size_t askedTriangles = before->tris.size();
+        // Compared by serial: a freed snapshot's address may be the next one's.
+        const std::uint64_t askedSerial = before->serial;
         bool replaced = false;
         window->chooseFile = [&](MainWindow::FileDialog) {
+            // The window starts paused: each step publishes a frame.
             QElapsedTimer waited;
             waited.start();
-            while (!replaced && waited.elapsed() < 5000) {
+            for (int frames = 0; frames < 30 && waited.elapsed() < 5000;) {
+                const std::uint64_t shown = window->viewport()->snapshot()->serial;
+                window->simulation()->stepOnce();
                 QTest::qWait(20);
-                replaced = window->viewport()->snapshot() != before;
+                if (window->viewport()->snapshot()->serial != shown) ++frames;
             }
-            QTest::qWait(100); // and a few more frames
+            replaced = window->viewport()->snapshot()->serial != askedSerial;
             return dir.filePath(QStringLiteral("sheet"));
         };
         window->action("exportMesh")->trigger();
