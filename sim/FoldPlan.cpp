@@ -86,23 +86,22 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
     const Vec3 onPaper = request.from - (request.from - centre).dot(front) * front;
 
     // The flap is the lighter side: a hand folds the flap over, not the sheet under it.
+    // But pinned paper stays where it is, so a side with pins is not the flap: carried
+    // with pins in it, the flap tore from them (a valley fold past six pins: 25.8 %
+    // stretch, 608 breaks, and 489 a second after the let-go).
     double mass[2] = {0.0, 0.0};
-    for (Index i = 0; i < V.size(); ++i)
-        mass[(V.x[i] - onPaper).dot(across) > 0.0 ? 1 : 0] += V.m[i];
+    bool pinnedOn[2] = {false, false};
+    for (Index i = 0; i < V.size(); ++i) {
+        const double d = (V.x[i] - onPaper).dot(across);
+        mass[d > 0.0 ? 1 : 0] += V.m[i];
+        if (V.pinned[i] && std::abs(d) > kPinOnLine) pinnedOn[d > 0.0 ? 1 : 0] = true;
+    }
     if (!(mass[0] > 0.0 && mass[1] > 0.0)) return refuse(FoldRefusal::NothingToFold);
+    if (pinnedOn[0] && pinnedOn[1]) return refuse(FoldRefusal::PinnedBothSides);
     // Halves that weigh the same (a line across the middle of a sheet) differ only by
     // rounding, which would pick the side by the sheet's resolution: within a billionth,
     // the side `across` points to is the flap.
     double side = mass[1] <= mass[0] * (1.0 + 1e-9) ? 1.0 : -1.0;
-    // Pinned paper stays where it is, so the flap is the side with no pins: carried with
-    // pins in it, the flap tore from them (a valley fold past six pins: 25.8 % stretch,
-    // 608 breaks, and 489 a second after the let-go).
-    bool pinnedOn[2] = {false, false};
-    for (Index i = 0; i < V.size(); ++i) {
-        const double d = (V.x[i] - onPaper).dot(across);
-        if (V.pinned[i] && std::abs(d) > kPinOnLine) pinnedOn[d > 0.0 ? 1 : 0] = true;
-    }
-    if (pinnedOn[0] && pinnedOn[1]) return refuse(FoldRefusal::PinnedBothSides);
     if (pinnedOn[0] || pinnedOn[1]) side = pinnedOn[1] ? -1.0 : 1.0;
     // Toward the side the flap goes to: the front for a valley fold, the back for a
     // mountain fold.

@@ -258,14 +258,16 @@ class TestRender : public QObject {
         for (Index i = 0; i < Index(snap.x.size()); i += 37) snap.pinned.push_back(i);
         const OrbitCamera camera = test::cameraFor(c, snap, double(kWidth) / kHeight);
         RenderOptions options = test::optionsFor(c);
-        auto redPixels = [](const QImage& image) {
+        const auto pixelsWhere = [](const QImage& image, auto colourIs) {
             int n = 0;
             for (int y = 0; y < image.height(); ++y)
-                for (int x = 0; x < image.width(); ++x) {
-                    const QColor p = image.pixelColor(x, y);
-                    n += p.red() > 150 && p.green() < 90 && p.blue() < 110 ? 1 : 0;
-                }
+                for (int x = 0; x < image.width(); ++x) n += colourIs(image.pixelColor(x, y));
             return n;
+        };
+        const auto redPixels = [&](const QImage& image) {
+            return pixelsWhere(image, [](const QColor& p) {
+                return p.red() > 150 && p.green() < 90 && p.blue() < 110;
+            });
         };
         options.pins = false;
         QCOMPARE(redPixels(renderer->render(snap, camera, options)), 0);
@@ -273,14 +275,10 @@ class TestRender : public QObject {
         const int marked = redPixels(renderer->render(snap, camera, options));
         QVERIFY2(marked > 5 * int(snap.pinned.size()), qPrintable(QString::number(marked)));
         // What a hand holds for a while (a fold's carry) is marked in blue, not pin red.
-        auto bluePixels = [](const QImage& image) {
-            int n = 0;
-            for (int y = 0; y < image.height(); ++y)
-                for (int x = 0; x < image.width(); ++x) {
-                    const QColor p = image.pixelColor(x, y);
-                    n += p.blue() > 150 && p.red() < 90 && p.green() < 140 ? 1 : 0;
-                }
-            return n;
+        const auto bluePixels = [&](const QImage& image) {
+            return pixelsWhere(image, [](const QColor& p) {
+                return p.blue() > 150 && p.red() < 90 && p.green() < 140;
+            });
         };
         const int blueBefore = bluePixels(renderer->render(snap, camera, options));
         snap.held.swap(snap.pinned);
