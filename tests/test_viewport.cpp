@@ -7,6 +7,7 @@
 #include "Viewport.h"
 
 #include <QMouseEvent>
+#include <QSignalSpy>
 #include <QTest>
 #include <QWindow>
 
@@ -132,6 +133,31 @@ class TestViewport : public QObject {
         QTest::qWait(200); // the update asked for last arrives after the close
         QCOMPARE(frames, 3);
         QVERIFY(!view.isVisible());
+    }
+
+    // A new snapshot is drawn at the next turn of the event loop. An update waited 5 ms
+    // for the frame clock Xvfb does not have, and the editor drew 40 of the simulation's
+    // 59 frames a second; the GUI thread was busy 3 ms of each.
+    void aNewSnapshotIsDrawnAtTheNextTurnOfTheEventLoop() {
+        const test::RenderCase& c = test::renderCases()[0];
+        auto first = std::make_shared<SheetSnapshot>(test::snapshotFor(c));
+        Viewport view;
+        view.resize(320, 200);
+        view.setSnapshot(first);
+        view.setCamera(test::cameraFor(c, *first, 320.0 / 200));
+        QSignalSpy drawn(&view, &Viewport::frameDrawn);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QTRY_VERIFY(drawn.count() >= 1);
+        QTest::qWait(50); // anything the first show asked for is drawn
+        drawn.clear();
+
+        auto moved = std::make_shared<SheetSnapshot>(*first);
+        for (Vec3& x : moved->x) x.y() += 0.01; // lifted 1 cm: another picture
+        view.setSnapshot(moved);
+        QCoreApplication::processEvents(); // once, waiting for nothing
+        QCOMPARE(drawn.count(), 1);
+        QCOMPARE(view.snapshot(), moved.get());
     }
 
     // 4× MSAA halves the frame rate where the CPU draws: the view goes without it there,

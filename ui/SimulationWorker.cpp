@@ -27,7 +27,7 @@ void SimulationWorker::runCommands() {
 }
 
 void SimulationWorker::start() {
-    timer_.start(static_cast<int>(std::lround(kFrameSeconds * 1000)));
+    timer_.start(kTickMilliseconds);
     publish(0.0);
 }
 

@@ -3,7 +3,8 @@
 // where the `press` sheet shows, for PUSH_SECONDS (default 120) of wall time, then hands off for
 // REST_SECONDS (default 10); PUSH_SHEET=file.paper opens that sheet first (a large one
 // measures the editor at scale); PUSH_THREADS=n steps on n threads (default: the
-// editor's setting); PUSH_SHOT=file.png saves the window at the end. Every 10 s it prints
+// editor's setting); PUSH_SHOT=file.png saves the window at the end, PUSH_SAVE=file.paper
+// the sheet. Every 10 s it prints
 // the sheet's size, the step's cost, frames drawn per second and how much simulated time passed per
 // second of wall time: the editor keeps up with real time while that stays at 1.
 //   xvfb-run -a -s "-screen 0 1280x1024x24" build/tests/editor_push_minutes
@@ -66,23 +67,34 @@ int main(int argc, char** argv) {
     sim->setPlaying(true);
 
     QSignalSpy frames(window.viewport(), &Viewport::frameDrawn);
+    // Snapshots the GUI thread took from the simulation, and the GUI thread's share of
+    // each frame drawn (the rest is llvmpipe's rasterising threads and the swap).
+    QSignalSpy snapshots(sim, &SimulationThread::snapshotReady);
+    double paintSeconds = 0.0;
+    QObject::connect(window.viewport(), &Viewport::frameDrawn,
+                     [&] { paintSeconds += window.viewport()->lastFrameSeconds(); });
     double worst = 1e9;
     std::int64_t lastStep = sim->status().step;
     QElapsedTimer wall;
     wall.start();
     std::printf(
-        "   wall  phase  vertices  springs  breaks (/s)  step µs   fps  sim s per wall s\n");
+        "   wall  phase  vertices  springs  breaks (/s)  step µs   fps  snaps/s  paint ms  sim s "
+        "per wall s\n");
     const auto report = [&](const char* phase) {
         const SimulationStatus st = sim->status();
         const double seconds = wall.restart() * 1e-3;
         const double pace = (st.step - lastStep) * dt / seconds;
-        std::printf("%7.0f  %5s  %8d  %7d  %6d (%3d)  %7.0f  %4.0f  %.2f\n", t.elapsed() * 1e-3,
-                    phase, st.vertices, st.springs, st.breaks, st.breaksLastSecond,
-                    st.stepSeconds * 1e6, frames.count() / seconds, pace);
+        std::printf("%7.0f  %5s  %8d  %7d  %6d (%3d)  %7.0f  %4.0f  %7.0f  %8.1f  %.2f\n",
+                    t.elapsed() * 1e-3, phase, st.vertices, st.springs, st.breaks,
+                    st.breaksLastSecond, st.stepSeconds * 1e6, frames.count() / seconds,
+                    snapshots.count() / seconds,
+                    frames.empty() ? 0.0 : 1e3 * paintSeconds / frames.count(), pace);
         std::fflush(stdout);
         worst = std::min(worst, pace);
         lastStep = st.step;
         frames.clear();
+        snapshots.clear();
+        paintSeconds = 0.0;
     };
     QElapsedTimer phase;
     phase.start();
@@ -102,6 +114,7 @@ int main(int argc, char** argv) {
     std::printf("slowest 10 s: %.2f of real time\n", worst);
     if (const char* shot = std::getenv("PUSH_SHOT"))
         window.grab().save(QString::fromLocal8Bit(shot));
+    if (const char* save = std::getenv("PUSH_SAVE")) window.saveFile(QString::fromLocal8Bit(save));
     window.close();
     return worst >= 0.9 ? 0 : 1;
 }
