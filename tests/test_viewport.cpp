@@ -33,6 +33,16 @@ class MouseLog : public QObject {
     }
 };
 
+// The first render case's sheet in a 320 × 200 view, framed; the view is not shown yet.
+std::shared_ptr<SheetSnapshot> frameFirstCase(Viewport& view) {
+    const test::RenderCase& c = test::renderCases()[0];
+    auto snap = std::make_shared<SheetSnapshot>(test::snapshotFor(c));
+    view.resize(320, 200);
+    view.setSnapshot(snap);
+    view.setCamera(test::cameraFor(c, *snap, 320.0 / 200));
+    return snap;
+}
+
 } // namespace
 
 class TestViewport : public QObject {
@@ -112,12 +122,8 @@ class TestViewport : public QObject {
     // frameDrawn comes after the frame is on screen: a receiver that closes the view,
     // with an update still asked for, must not pull the context out from under a paint.
     void closingFromFrameDrawnIsSafe() {
-        const test::RenderCase& c = test::renderCases()[0];
-        auto snap = std::make_shared<SheetSnapshot>(test::snapshotFor(c));
         Viewport view;
-        view.resize(320, 200);
-        view.setSnapshot(snap);
-        view.setCamera(test::cameraFor(c, *snap, 320.0 / 200));
+        frameFirstCase(view);
         int frames = 0;
         // (A snapshot that draws the same picture asks for no frame; a camera does.)
         connect(&view, &Viewport::frameDrawn, &view, [&] {
@@ -139,12 +145,8 @@ class TestViewport : public QObject {
     // for the frame clock Xvfb does not have, and the editor drew 40 of the simulation's
     // 59 frames a second; the GUI thread was busy 3 ms of each.
     void aNewSnapshotIsDrawnAtTheNextTurnOfTheEventLoop() {
-        const test::RenderCase& c = test::renderCases()[0];
-        auto first = std::make_shared<SheetSnapshot>(test::snapshotFor(c));
         Viewport view;
-        view.resize(320, 200);
-        view.setSnapshot(first);
-        view.setCamera(test::cameraFor(c, *first, 320.0 / 200));
+        const auto first = frameFirstCase(view);
         QSignalSpy drawn(&view, &Viewport::frameDrawn);
         view.show();
         QVERIFY(QTest::qWaitForWindowExposed(&view));
