@@ -3,6 +3,7 @@
 #include "ActionTexts.h"
 #include "AllocatorTuning.h"
 #include "ChartBrowser.h"
+#include "DockScrollArea.h"
 #include "EditorDialogs.h"
 #include "EditorParameters.h"
 #include "HelpText.h"
@@ -489,7 +490,7 @@ void MainWindow::createDocks() {
     panel_ = new ParameterPanel(this);
     panelDock_ = new QDockWidget(this);
     panelDock_->setObjectName(QStringLiteral("parameterDock"));
-    panelDock_->setWidget(panel_);
+    panelDock_->setWidget(new DockScrollArea(panel_));
     addDockWidget(Qt::RightDockWidgetArea, panelDock_);
     undoView_ = new QUndoView(undo_, this);
     historyDock_ = new QDockWidget(this);
@@ -499,7 +500,7 @@ void MainWindow::createDocks() {
     solver_ = new SolverPanel(this);
     solverDock_ = new QDockWidget(this);
     solverDock_->setObjectName(QStringLiteral("solverDock"));
-    solverDock_->setWidget(solver_);
+    solverDock_->setWidget(new DockScrollArea(solver_));
     addDockWidget(Qt::RightDockWidgetArea, solverDock_);
     viewMenu_->addSeparator();
     viewMenu_->addAction(panelDock_->toggleViewAction());
@@ -759,7 +760,8 @@ void MainWindow::exportImage() {
     const QString path = chooseFileToWrite(FileDialog::ExportImage);
     if (path.isEmpty()) return;
     RenderOptions picture = viewport_->renderOptions();
-    picture.pins = false; // editing marks, not the artwork
+    picture.pins = false;   // editing marks, not the artwork,
+    picture.sphere = false; // as is the tool under the cursor
     // A large picture takes seconds in software: it renders on a thread of its own
     // (OSMesa needs no window) while a dialog says so and the window stays drawn.
     QString error;

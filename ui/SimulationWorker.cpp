@@ -61,7 +61,13 @@ void SimulationWorker::replaceWorld(const World& world) {
 }
 
 void SimulationWorker::setTool(const Vec3& target, double radius, bool visible, bool pressed) {
+    const SphereTool before = session_.world().sphere;
     announce(session_.setTool(target, radius, visible, pressed));
+    // Paused, a frame is published only when the tool moves: one that appears under the
+    // cursor (where it is put at once), goes or is pressed is shown now.
+    const SphereTool& after = session_.world().sphere;
+    if (!playing_ && (after.hovering != before.hovering || after.active != before.active))
+        publish(0.0);
 }
 
 void SimulationWorker::grab(const Vec3& target, bool held, bool begin) {

@@ -3,10 +3,10 @@
 // where the `press` sheet shows, for PUSH_SECONDS (default 120) of wall time, then hands off for
 // REST_SECONDS (default 10); PUSH_SHEET=file.paper opens that sheet first (a large one
 // measures the editor at scale); PUSH_THREADS=n steps on n threads (default: the
-// editor's setting); PUSH_SHOT=file.png saves the window at the end, PUSH_SAVE=file.paper
-// the sheet. Every 10 s it prints
-// the sheet's size, the step's cost, frames drawn per second and how much simulated time passed per
-// second of wall time: the editor keeps up with real time while that stays at 1.
+// editor's setting); PUSH_WINDOW=WxH sizes the window; PUSH_SHOT=file.png saves the window at the
+// end, PUSH_SAVE=file.paper the sheet. Every 10 s it prints the sheet's size, the step's cost,
+// frames drawn per second and how much simulated time passed per second of wall time: the editor
+// keeps up with real time while that stays at 1.
 //   xvfb-run -a -s "-screen 0 1280x1024x24" build/tests/editor_push_minutes
 // Exit status 1 if the simulation fell below 0.9 of real time in any 10 s.
 #include "BenchWindow.h"
@@ -52,7 +52,13 @@ int main(int argc, char** argv) {
     QRandomGenerator rng(2026);
 
     MainWindow window;
-    if (!bench::showBenchWindow(window, QSize(1280, 720))) return 2;
+    // PUSH_WINDOW=WxH sizes the window (default 1280x720; the docks take part of it).
+    QSize windowSize(1280, 720);
+    if (const char* size = std::getenv("PUSH_WINDOW")) {
+        const QStringList wh = QString::fromLatin1(size).split(QLatin1Char('x'));
+        if (wh.size() == 2) windowSize = QSize(wh[0].toInt(), wh[1].toInt());
+    }
+    if (!bench::showBenchWindow(window, windowSize)) return 2;
     if (const char* sheet = std::getenv("PUSH_SHEET")) {
         window.showError = [](const QString& message) {
             std::fprintf(stderr, "%s\n", qPrintable(message));
@@ -77,6 +83,8 @@ int main(int argc, char** argv) {
     std::int64_t lastStep = sim->status().step;
     QElapsedTimer wall;
     wall.start();
+    std::printf("window %dx%d, view %dx%d\n", window.width(), window.height(),
+                window.viewport()->width(), window.viewport()->height());
     std::printf(
         "   wall  phase  vertices  springs  breaks (/s)  step µs   fps  snaps/s  paint ms  sim s "
         "per wall s\n");
