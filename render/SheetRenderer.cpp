@@ -4,6 +4,7 @@
 #include "Subdivision.h"
 
 #include <QFile>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -109,8 +110,8 @@ bool SheetRenderer::initialize(const GlFunctions& gl, QString* error) {
     gl.EnableVertexAttribArray(0);
     gl.EnableVertexAttribArray(1);
 
-    const float ground[] = {-1.5f, 0, -1.5f, 1.5f, 0, -1.5f, 1.5f,  0, 1.5f,
-                            -1.5f, 0, -1.5f, 1.5f, 0, 1.5f,  -1.5f, 0, 1.5f};
+    // In units of the desk's reach (ground.vert): the fade is complete at 1.
+    const float ground[] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, -1, 1, 0, 1, -1, 0, 1};
     gl.GenVertexArrays(1, &groundVao_);
     gl.GenBuffers(1, &groundVbo_);
     gl.BindVertexArray(groundVao_);
@@ -356,6 +357,13 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
         setMatrix(groundProgram_, "uViewProj", viewProj);
         gl.Uniform1f(gl.GetUniformLocation(groundProgram_, "uGround"), ground);
         setVec3(groundProgram_, "uBackground", kBackground);
+        // Around where the camera looks, reaching 1 m at the editor's usual distances and
+        // farther as the camera backs off, so that paper slid off anywhere lies on it.
+        const Vec3& t = camera.target;
+        gl.Uniform2f(gl.GetUniformLocation(groundProgram_, "uCenter"), float(t.x()), float(t.z()));
+        gl.Uniform1f(gl.GetUniformLocation(groundProgram_, "uReach"),
+                     float(std::max(1.0, 1.6 * camera.distance)));
+        gl.Uniform1f(gl.GetUniformLocation(groundProgram_, "uHeight"), float(height));
         gl.BindVertexArray(groundVao_);
         gl.DrawArrays(GL_TRIANGLES, 0, 6);
 

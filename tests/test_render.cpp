@@ -197,6 +197,29 @@ class TestRender : public QObject {
         QVERIFY(qGray(centre) > qGray(corner) + 30);
     }
 
+    // The floor the paper rests on has no edge, and neither has the desk drawn: paper that
+    // slid 3 m away lies on desk, not on the background (the desk was a 3 m square round
+    // the origin, and a user's sheet that slid off it lay on nothing). The fade into the
+    // background follows the camera, in the background's own shade: no band where the
+    // desk ends (a front view showed one across the whole picture).
+    void paperThatSlidAwayStillLiesOnTheDesk() {
+        test::RenderCase c = test::renderCases()[0];
+        c.steps = 0;
+        SheetSnapshot snap = test::snapshotFor(c);
+        for (Vec3& x : snap.x) x += Vec3(3.0, 0.0, 2.0);
+        const OrbitCamera camera = test::cameraFor(c, snap, double(kWidth) / kHeight);
+        const QImage image = renderer->render(snap, camera, test::optionsFor(c));
+        // The desk is warm grey (red above blue), the background a cool grey.
+        int desk = 0, sampled = 0;
+        for (int y = kHeight - 20; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x, ++sampled) {
+                const QColor p = image.pixelColor(x, y);
+                desk += p.red() > p.blue() + 3 ? 1 : 0;
+            }
+        QVERIFY2(desk > 0.9 * sampled,
+                 qPrintable(QStringLiteral("%1 of %2").arg(desk).arg(sampled)));
+    }
+
     // A picture lies on the sheet as printed on it: its left half on the sheet's -x
     // side, its top band on the -z side (far, from the front), seen from the top; its
     // colours multiplied by the paper colour. Pixels at projected sheet vertices.
