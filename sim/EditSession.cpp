@@ -250,23 +250,26 @@ std::optional<EditSession::StrokeEnd> EditSession::pin(const Vec3& point, double
     record(std::move(c));
     if (busy()) return std::nullopt;
     const auto& V = sim_.world().sheet.verts;
-    // A click within reach of a pin frees it, even where free paper lies nearer the
-    // click: paper that hangs from a pin falls steeply away round it (xpbd's does not
-    // stretch), and the nearest vertex to a second click on the pin was free paper.
-    Index nearest = kNone, nearestPinned = kNone;
-    double best = radius * radius, bestPinned = radius * radius;
+    // A click within reach of a pin frees it, even where free paper lies a little nearer
+    // the click: paper that hangs from a pin falls steeply away round it (xpbd's does not
+    // stretch), and the nearest vertex to a second click on the pin was free paper. But a
+    // click on free paper clearly nearer than any pin pins it: between two pins a column
+    // apart, a click on the free column between them freed a whole row of pins.
+    Index nearestFree = kNone, nearestPinned = kNone;
+    double bestFree = radius * radius, bestPinned = radius * radius;
     for (Index i = 0; i < V.size(); ++i) {
         const double d = (V.x[i] - point).squaredNorm();
+        Index& nearest = V.pinned[i] ? nearestPinned : nearestFree;
+        double& best = V.pinned[i] ? bestPinned : bestFree;
         if (d <= best) {
             best = d;
             nearest = i;
         }
-        if (V.pinned[i] && d <= bestPinned) {
-            bestPinned = d;
-            nearestPinned = i;
-        }
     }
-    if (nearestPinned != kNone) nearest = nearestPinned;
+    const double onPin = kOnPinShare * kOnPinShare * radius * radius;
+    const bool freeing = nearestPinned != kNone && (nearestFree == kNone || bestPinned <= onPin ||
+                                                    bestPinned <= 4.0 * bestFree);
+    const Index nearest = freeing ? nearestPinned : nearestFree;
     if (nearest == kNone) return std::nullopt;
     const bool to = !V.pinned[nearest];
     std::vector<Index> changed;

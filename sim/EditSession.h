@@ -110,13 +110,16 @@ class EditSession {
     // The world as a file should keep it: a grabbed vertex is held, not pinned.
     World worldToSave() const;
     Index grabbedVertex() const { return grabbed_; }
-    // Pin: toggles the vertices around `point` — when the vertex nearest to it (within
-    // `radius`) is free, the free vertices within `radius` of the point are pinned; when
-    // it is pinned, its pinned patch (pinned vertices joined by springs, within
+    // Pin: toggles the vertices around `point` — when the click is on free paper (see
+    // kOnPinShare), the free vertices within `radius` of the point are pinned; when it is
+    // on a pin, the pin's patch (pinned vertices joined by springs, within
     // kPinPatchReach radii of the point) is freed. Pinned vertices stand still and are saved
     // with the sheet. An undo step; nothing when no vertex is that close.
     std::optional<StrokeEnd> pin(const Vec3& point, double radius);
     static constexpr double kPinPatchReach = 3.0;
+    // A click this share of the radius from a pin frees it; farther off, it frees the
+    // pin only if no free paper lies at less than half the pin's distance.
+    static constexpr double kOnPinShare = 0.25;
 
     // Reset: the sheet starts again from `world` (the scene as New makes it) as an undo
     // step, unlike New and Open: undo gives back the sheet as it was, with the strokes

@@ -863,6 +863,44 @@ class TestEditSession : public QObject {
         QVERIFY(!session.pin(at + Vec3(0, 1, 0), radius)); // nothing that close: no step
     }
 
+    // A click on free paper between two pins pins it, though both pins are within the
+    // click's reach: a user pinning an edge in steps, who clicked the gap left between
+    // two pins, saw a whole row of pins freed instead ("Unpin 12 vertices").
+    void aClickBetweenTwoPinsPinsThePaperThere() {
+        EditSession session(test::machineryScene("press"));
+        const auto& V = session.world().sheet.verts;
+        const auto nearestTo = [&](const Vec3& p) {
+            Index best = 0;
+            for (Index i = 1; i < V.size(); ++i)
+                if ((V.x[i] - p).squaredNorm() < (V.x[best] - p).squaredNorm()) best = i;
+            return best;
+        };
+        const Index middle = nearestTo(Vec3::Zero());
+        // The next vertex along x on each side, one row spacing away.
+        double spacing = std::numeric_limits<double>::infinity();
+        for (Index i = 0; i < V.size(); ++i) {
+            const Vec3 d = V.x[i] - V.x[middle];
+            if (i != middle && std::abs(d.z()) < 1e-9) spacing = std::min(spacing, std::abs(d.x()));
+        }
+        QVERIFY(std::isfinite(spacing));
+        const Index left = nearestTo(V.x[middle] - Vec3(spacing, 0, 0));
+        const Index right = nearestTo(V.x[middle] + Vec3(spacing, 0, 0));
+        QVERIFY(session.pin(V.x[left], 1e-4));
+        QVERIFY(session.pin(V.x[right], 1e-4));
+        QVERIFY(V.pinned[left] && V.pinned[right] && !V.pinned[middle]);
+
+        const auto click = session.pin(V.x[middle] + Vec3(0.1 * spacing, 0, 0), 1.2 * spacing);
+        QVERIFY(click);
+        QCOMPARE(click->kind, EditSession::StrokeKind::Pin);
+        QVERIFY(V.pinned[middle]);
+        QVERIFY(V.pinned[left] && V.pinned[right]);
+        // A click by a pin, with the free paper no nearer, frees it as before.
+        const auto byPin = session.pin(V.x[left] - Vec3(0.2 * spacing, 0, 0), 1.2 * spacing);
+        QVERIFY(byPin);
+        QCOMPARE(byPin->kind, EditSession::StrokeKind::Unpin);
+        QVERIFY(!V.pinned[left]);
+    }
+
     void aSessionWithGrabsAndPinsReplays() {
         EditSession session(test::machineryScene("press"));
         const Vec3 a = session.world().sheet.verts.x[0];
