@@ -35,6 +35,7 @@
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
@@ -1043,10 +1044,46 @@ class TestEditor : public QObject {
         QCOMPARE(bluish(picture), 0);
     }
 
+    // Orbited down past the horizon the eye went under the desk, which hid the paper while
+    // the pins' marks showed through it: the orbit stops with the eye above the desk.
+    void theCameraStaysAboveTheDesk() {
+        Viewport* view = window->viewport();
+        QTRY_VERIFY(view->snapshot());
+        const double desk = view->snapshot()->groundHeight;
+        QVERIFY(view->snapshot()->groundEnabled);
+        for (int k = 0; k < 40; ++k) QTest::keyClick(view, Qt::Key_Down);
+        QVERIFY2(view->camera().eye().y() >= desk + 0.004,
+                 qPrintable(QString::number(view->camera().eye().y() - desk)));
+        const double lowest = view->camera().pitch;
+        // Dragged with the right button, too; and the way back up is open.
+        QTest::mousePress(view, Qt::RightButton, {}, QPoint(200, 200));
+        for (int k = 1; k <= 20; ++k) moveMouse(view, QPoint(200, 200 - 10 * k), Qt::RightButton);
+        QTest::mouseRelease(view, Qt::RightButton, {}, QPoint(200, 0));
+        QVERIFY(view->camera().eye().y() >= desk + 0.004);
+        QCOMPARE(view->camera().pitch, lowest);
+        for (int k = 0; k < 4; ++k) QTest::keyClick(view, Qt::Key_Up);
+        QVERIFY(view->camera().pitch > lowest + 19.0);
+    }
+
     // A small window: the docks scroll instead of spilling over the status bar or being
     // cut off (a user's Solver dock, at 800 × 600, drew its Stretch row over the status
-    // bar, and its Breaks row and chart button were out of reach).
+    // bar, and its Breaks row and chart button were out of reach). Where the window has
+    // the height, the Parameters and Solver docks show all they hold and the History
+    // takes what is left: at the default size, after a small window is made large
+    // again, and when Advanced opens.
     void theDocksFitASmallWindow() {
+        const auto panelArea = [this](const char* name) {
+            auto* dock = window->findChild<QDockWidget*>(QLatin1String(name));
+            return dock ? qobject_cast<QScrollArea*>(dock->widget()) : nullptr;
+        };
+        const auto scrolls = [&](const char* name) {
+            return panelArea(name)->verticalScrollBar()->isVisible();
+        };
+        window->resize(1280, 800); // the editor's first size
+        for (const char* name : {"parameterDock", "solverDock"}) {
+            QVERIFY2(panelArea(name), name);
+            QTRY_VERIFY2(!scrolls(name), name);
+        }
         window->resize(800, 600);
         QTest::qWait(100);
         QCOMPARE(window->size(), QSize(800, 600));
@@ -1058,16 +1095,20 @@ class TestEditor : public QObject {
             // What does not fit scrolls (the History is a list view, which always did).
             QVERIFY2(qobject_cast<QAbstractScrollArea*>(dock->widget()), name);
         }
+        QVERIFY(scrolls("solverDock"));
         // The Solver dock's last control can be scrolled to.
-        auto* area = qobject_cast<QScrollArea*>(
-            window->findChild<QDockWidget*>(QStringLiteral("solverDock"))->widget());
-        QVERIFY(area);
+        QScrollArea* area = panelArea("solverDock");
         QWidget* button = area->widget()->findChild<QPushButton*>();
         QVERIFY(button);
         area->ensureWidgetVisible(button);
         const QRect shown = area->viewport()->rect();
         const QRect at(button->mapTo(area->viewport(), QPoint(0, 0)), button->size());
         QVERIFY2(shown.contains(at), "the chart button cannot be scrolled to");
+
+        window->resize(1280, 800);
+        QTRY_VERIFY(!scrolls("parameterDock") && !scrolls("solverDock"));
+        window->panel()->findChild<QGroupBox*>()->setChecked(true); // Advanced
+        QTRY_VERIFY(!scrolls("parameterDock") && !scrolls("solverDock"));
     }
 
     void thePaperLookReachesTheViewAndTheExports() {

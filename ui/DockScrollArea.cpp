@@ -35,6 +35,7 @@ bool DockScrollArea::eventFilter(QObject* watched, QEvent* event) {
     const bool barShownOrHidden = watched == verticalScrollBar() &&
                                   (event->type() == QEvent::Show || event->type() == QEvent::Hide);
     if (contentsChanged || barShownOrHidden) updateGeometry();
+    if (contentsChanged) emit contentsResized();
     return QScrollArea::eventFilter(watched, event);
 }
 

@@ -9,11 +9,17 @@ namespace pf {
 // the window's: the editor could not be made shorter than 721 pixels, and where a window
 // manager made it so, the Solver dock drew its rows over the status bar.
 class DockScrollArea : public QScrollArea {
+    Q_OBJECT
+
   public:
     explicit DockScrollArea(QWidget* content, QWidget* parent = nullptr);
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
+
+  signals:
+    // The contents asked for another size (a section opened, another language).
+    void contentsResized();
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;

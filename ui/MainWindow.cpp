@@ -490,7 +490,8 @@ void MainWindow::createDocks() {
     panel_ = new ParameterPanel(this);
     panelDock_ = new QDockWidget(this);
     panelDock_->setObjectName(QStringLiteral("parameterDock"));
-    panelDock_->setWidget(new DockScrollArea(panel_));
+    auto* panelArea = new DockScrollArea(panel_);
+    panelDock_->setWidget(panelArea);
     addDockWidget(Qt::RightDockWidgetArea, panelDock_);
     undoView_ = new QUndoView(undo_, this);
     historyDock_ = new QDockWidget(this);
@@ -500,12 +501,37 @@ void MainWindow::createDocks() {
     solver_ = new SolverPanel(this);
     solverDock_ = new QDockWidget(this);
     solverDock_->setObjectName(QStringLiteral("solverDock"));
-    solverDock_->setWidget(new DockScrollArea(solver_));
+    auto* solverArea = new DockScrollArea(solver_);
+    solverDock_->setWidget(solverArea);
     addDockWidget(Qt::RightDockWidgetArea, solverDock_);
+    for (DockScrollArea* area : {panelArea, solverArea})
+        connect(area, &DockScrollArea::contentsResized, this, &MainWindow::fitDocks,
+                Qt::QueuedConnection);
     viewMenu_->addSeparator();
     viewMenu_->addAction(panelDock_->toggleViewAction());
     viewMenu_->addAction(historyDock_->toggleViewAction());
     viewMenu_->addAction(solverDock_->toggleViewAction());
+}
+
+// The Parameters and Solver docks get the height of their contents where the window has
+// it, the History what is left: Qt shares a short window's height out by the docks' size
+// hints, and the two panels scrolled at the default 1280 × 800 with the History half
+// empty. Done again when the window or a panel's contents change size, so a dragged
+// splitter lasts until then.
+void MainWindow::fitDocks() {
+    if (!panelDock_ || !solverDock_) return;
+    // (resizeDocks leaves a dock a pixel short of the height asked, and the panel then
+    // scrolls by that pixel: asked for two more.)
+    constexpr int kSlack = 2;
+    resizeDocks(
+        {panelDock_, solverDock_},
+        {panelDock_->sizeHint().height() + kSlack, solverDock_->sizeHint().height() + kSlack},
+        Qt::Vertical);
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event) {
+    QMainWindow::resizeEvent(event);
+    fitDocks();
 }
 
 void MainWindow::retranslate() {

@@ -87,12 +87,14 @@ class MainWindow : public QMainWindow {
 
   protected:
     void closeEvent(QCloseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     void changeEvent(QEvent* event) override;
 
   private:
     void createActions();
     void createMenus();
     void createDocks();
+    void fitDocks();
     void retranslate();
     void connectParameters();
     void onSnapshot();

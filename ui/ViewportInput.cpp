@@ -9,6 +9,7 @@
 #include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace pf {
 
@@ -166,6 +167,21 @@ void ViewportInput::hideTool() {
     sim_->setTool(toolTarget_, toolRadius_, false, false);
 }
 
+// Seen from under the desk, the desk hides the paper and only the pins' marks showed
+// through: an orbit or pan stops with the eye 5 mm above the desk.
+void ViewportInput::look(OrbitCamera camera) {
+    const SheetSnapshot* snap = viewport_->snapshot();
+    if (snap && snap->groundEnabled && camera.distance > 0.0) {
+        const double lowest = snap->groundHeight + 0.005;
+        if (camera.eye().y() < lowest) {
+            const double rise =
+                std::clamp((lowest - camera.target.y()) / camera.distance, -1.0, 1.0);
+            camera.pitch = std::min(89.9, std::asin(rise) * 180.0 / std::numbers::pi);
+        }
+    }
+    viewport_->setCamera(camera);
+}
+
 bool ViewportInput::orbitPanOrZoom(QEvent* event) {
     OrbitCamera c = viewport_->camera();
     if (event->type() == QEvent::Wheel) {
@@ -197,7 +213,7 @@ bool ViewportInput::orbitPanOrZoom(QEvent* event) {
     } else {
         return false;
     }
-    viewport_->setCamera(c);
+    look(c);
     return true;
 }
 
@@ -217,7 +233,7 @@ bool ViewportInput::eventFilter(QObject* watched, QEvent* event) {
         if (move && (e->buttons() & Qt::RightButton) && !shift) {
             OrbitCamera c = viewport_->camera();
             c.orbit(-0.4 * delta.x(), 0.4 * delta.y());
-            viewport_->setCamera(c);
+            look(c);
             return true;
         }
         if (move &&
@@ -225,7 +241,7 @@ bool ViewportInput::eventFilter(QObject* watched, QEvent* event) {
             OrbitCamera c = viewport_->camera();
             c.pan(-double(delta.x()) / viewport_->height(),
                   double(delta.y()) / viewport_->height());
-            viewport_->setCamera(c);
+            look(c);
             return true;
         }
         const bool left = e->buttons() & Qt::LeftButton;

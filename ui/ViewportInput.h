@@ -76,6 +76,8 @@ class ViewportInput : public QObject {
     Vec3 facing() const; // the view's direction, from the eye
     void hideTool();
     bool orbitPanOrZoom(QEvent* event);
+    // Shows the view from `camera`, its eye kept above the desk.
+    void look(OrbitCamera camera);
 
     Viewport* viewport_;
     SimulationThread* sim_;
