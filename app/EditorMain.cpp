@@ -22,6 +22,7 @@ int runEditor(int argc, char* argv[]) {
     }
     // Every GL context (the viewport's) must be 3.3 core; set before the app exists.
     QSurfaceFormat::setDefaultFormat(Viewport::requiredFormat());
+    Viewport::prepareProcess();
     QApplication app(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("PaperFold"));
     QCoreApplication::setApplicationName(QStringLiteral("PaperFold"));

@@ -53,6 +53,15 @@ void OrbitCamera::orbit(double dYaw, double dPitch) {
     pitch = std::clamp(pitch + dPitch, -89.9, 89.9);
 }
 
+void OrbitCamera::keepAbove(double floor) {
+    target.y() = std::max(target.y(), floor);
+    if (!(distance > 0.0)) return;
+    const double lowest = floor + kEyeAboveFloor;
+    if (eye().y() >= lowest) return;
+    const double rise = std::clamp((lowest - target.y()) / distance, -1.0, 1.0);
+    pitch = std::clamp(std::asin(rise) * 180.0 / std::numbers::pi, pitch, 89.9);
+}
+
 void OrbitCamera::pan(double dx, double dy) {
     const Mat4 v = view();
     const Vec3 right = v.block<1, 3>(0, 0).transpose();

@@ -31,6 +31,11 @@ struct OrbitCamera {
     void pan(double dx, double dy);
     // factor < 1 moves closer.
     void zoom(double factor);
+    // Keeps the target at or above `floor` and the eye kEyeAboveFloor above it, by
+    // lifting the target and then the pitch: seen from under the desk, the desk hid the
+    // paper and the pins' marks showed through it.
+    static constexpr double kEyeAboveFloor = 0.005;
+    void keepAbove(double floor);
     // Sets the distance so that a sphere of `radius` around `center` fills the view.
     void fit(const Vec3& center, double radius, double aspect);
     // fit() around the bounding sphere of `points` (at least 5 cm across).

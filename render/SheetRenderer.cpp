@@ -364,6 +364,8 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
         gl.Uniform1f(gl.GetUniformLocation(groundProgram_, "uReach"),
                      float(std::max(1.0, 1.6 * camera.distance)));
         gl.Uniform1f(gl.GetUniformLocation(groundProgram_, "uHeight"), float(height));
+        gl.Uniform2f(gl.GetUniformLocation(groundProgram_, "uShade"), kBackgroundShade[0],
+                     kBackgroundShade[1]);
         gl.BindVertexArray(groundVao_);
         gl.DrawArrays(GL_TRIANGLES, 0, 6);
 
@@ -405,6 +407,8 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
     gl.DepthFunc(GL_LEQUAL);
     gl.UseProgram(backgroundProgram_);
     setVec3(backgroundProgram_, "uBackground", kBackground);
+    gl.Uniform2f(gl.GetUniformLocation(backgroundProgram_, "uShade"), kBackgroundShade[0],
+                 kBackgroundShade[1]);
     gl.BindVertexArray(emptyVao_);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
     gl.DepthFunc(GL_LESS);

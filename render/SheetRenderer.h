@@ -27,6 +27,9 @@ class SheetRenderer {
 
     // The background, also used by legends and tests (the paper's colour is the look's).
     static constexpr float kBackground[3] = {0.80f, 0.82f, 0.85f};
+    // The background's shade from the bottom of the view to the top (times kBackground,
+    // at screen y from -1 to 1: a + b y); the desk fades into the same.
+    static constexpr float kBackgroundShade[2] = {0.92f, 0.1f};
 
   private:
     struct LineBatch {

@@ -899,6 +899,20 @@ class TestEditSession : public QObject {
         QVERIFY(byPin);
         QCOMPARE(byPin->kind, EditSession::StrokeKind::Unpin);
         QVERIFY(!V.pinned[left]);
+        // Off the pin by more than a quarter of the radius, with free paper farther than
+        // half as far again: still the pin's (paper round a pin it hangs from is steep).
+        QVERIFY(session.pin(V.x[left], 1e-4));
+        const Vec3 toMiddle = (V.x[middle] - V.x[left]).normalized();
+        const auto nearPin = session.pin(V.x[left] + 0.42 * spacing * toMiddle, 1.2 * spacing);
+        QVERIFY(nearPin);
+        QCOMPARE(nearPin->kind, EditSession::StrokeKind::Unpin);
+        QVERIFY(!V.pinned[left]);
+        // And at 0.7 of the way, free paper less than half as far: pinned.
+        QVERIFY(session.pin(V.x[left], 1e-4));
+        const auto nearFree = session.pin(V.x[left] + 0.7 * spacing * toMiddle, 1.2 * spacing);
+        QVERIFY(nearFree);
+        QCOMPARE(nearFree->kind, EditSession::StrokeKind::Pin);
+        QVERIFY(V.pinned[left] && V.pinned[middle]);
     }
 
     void aSessionWithGrabsAndPinsReplays() {

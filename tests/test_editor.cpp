@@ -1063,6 +1063,14 @@ class TestEditor : public QObject {
         QCOMPARE(view->camera().pitch, lowest);
         for (int k = 0; k < 4; ++k) QTest::keyClick(view, Qt::Key_Up);
         QVERIFY(view->camera().pitch > lowest + 19.0);
+        // Panned: dragging the view up moves the target down, toward and through the
+        // desk; the target stops on the desk and the eye above it.
+        QTest::mousePress(view, Qt::MiddleButton, {}, QPoint(200, 300));
+        for (int k = 1; k <= 60; ++k) moveMouse(view, QPoint(200, 300 - 40 * k), Qt::MiddleButton);
+        QTest::mouseRelease(view, Qt::MiddleButton, {}, QPoint(200, 0));
+        QVERIFY(view->camera().target.y() >= desk);
+        QVERIFY2(view->camera().eye().y() >= desk + 0.004,
+                 qPrintable(QString::number(view->camera().eye().y() - desk)));
     }
 
     // A small window: the docks scroll instead of spilling over the status bar or being
@@ -1085,8 +1093,7 @@ class TestEditor : public QObject {
             QTRY_VERIFY2(!scrolls(name), name);
         }
         window->resize(800, 600);
-        QTest::qWait(100);
-        QCOMPARE(window->size(), QSize(800, 600));
+        QTRY_COMPARE(window->size(), QSize(800, 600));
         const QRect status = window->statusBar()->geometry();
         for (const char* name : {"parameterDock", "historyDock", "solverDock"}) {
             auto* dock = window->findChild<QDockWidget*>(QLatin1String(name));
@@ -1095,8 +1102,9 @@ class TestEditor : public QObject {
             // What does not fit scrolls (the History is a list view, which always did).
             QVERIFY2(qobject_cast<QAbstractScrollArea*>(dock->widget()), name);
         }
-        QVERIFY(scrolls("solverDock"));
-        // The Solver dock's last control can be scrolled to.
+        // The three docks need more height than 800 × 600 leaves them: one panel
+        // scrolls, and the Solver dock's last control can be scrolled to.
+        QTRY_VERIFY(scrolls("parameterDock") || scrolls("solverDock"));
         QScrollArea* area = panelArea("solverDock");
         QWidget* button = area->widget()->findChild<QPushButton*>();
         QVERIFY(button);
@@ -1107,8 +1115,26 @@ class TestEditor : public QObject {
 
         window->resize(1280, 800);
         QTRY_VERIFY(!scrolls("parameterDock") && !scrolls("solverDock"));
-        window->panel()->findChild<QGroupBox*>()->setChecked(true); // Advanced
+        // Advanced opened in a window with room for it.
+        auto* history = window->findChild<QDockWidget*>(QStringLiteral("historyDock"));
+        auto* params = window->findChild<QDockWidget*>(QStringLiteral("parameterDock"));
+        window->resize(1280, 1000);
         QTRY_VERIFY(!scrolls("parameterDock") && !scrolls("solverDock"));
+        const int closed = params->height();
+        window->panel()->findChild<QGroupBox*>()->setChecked(true); // Advanced
+        QTRY_VERIFY(params->height() > closed + 50);
+        QTRY_VERIFY(!scrolls("parameterDock") && !scrolls("solverDock"));
+
+        // A splitter the user dragged stays while the readouts change at every frame.
+        window->resizeDocks({history, params}, {history->height() + 60, params->height() - 60},
+                            Qt::Vertical);
+        QTRY_VERIFY(scrolls("parameterDock"));
+        const int dragged = history->height();
+        for (int k = 0; k < 20; ++k) {
+            window->simulation()->stepOnce();
+            QTest::qWait(20);
+        }
+        QCOMPARE(history->height(), dragged);
     }
 
     void thePaperLookReachesTheViewAndTheExports() {

@@ -48,6 +48,9 @@ std::shared_ptr<SheetSnapshot> frameFirstCase(Viewport& view) {
 class TestViewport : public QObject {
     Q_OBJECT
 
+  public:
+    static void initMain() { Viewport::prepareProcess(); } // as the editor does
+
   private slots:
     void editorPathMatchesOsMesaPath_data() {
         QTest::addColumn<int>("index");
@@ -141,9 +144,9 @@ class TestViewport : public QObject {
         QVERIFY(!view.isVisible());
     }
 
-    // A new snapshot is drawn at the next turn of the event loop. An update waited 5 ms
-    // for the frame clock Xvfb does not have, and the editor drew 40 of the simulation's
-    // 59 frames a second; the GUI thread was busy 3 ms of each.
+    // A new snapshot is drawn at the next turn of the event loop (Viewport::prepareProcess).
+    // An update waited Qt's 5 ms idle time, and the editor drew 40 of the simulation's 59
+    // frames a second; the GUI thread was busy 3 ms of each.
     void aNewSnapshotIsDrawnAtTheNextTurnOfTheEventLoop() {
         Viewport view;
         const auto first = frameFirstCase(view);

@@ -10,6 +10,7 @@ DockScrollArea::DockScrollArea(QWidget* content, QWidget* parent) : QScrollArea(
     setWidgetResizable(true);
     setFrameShape(QFrame::NoFrame);
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    contentsHint_ = content->sizeHint();
     content->installEventFilter(this); // its size hints change with the language
     verticalScrollBar()->installEventFilter(this);
 }
@@ -30,12 +31,23 @@ QSize DockScrollArea::minimumSizeHint() const {
     return {widget()->minimumSizeHint().width() + scrollBarWidth(), 3 * fontMetrics().height()};
 }
 
+// The Solver panel's readouts change their text at every frame, and each change asks
+// for a new layout: only a change of the contents' size hint is passed on, and only one
+// of its height as contentsResized (passed on at every frame, the docks were laid out
+// again 60 times a second and a dragged splitter sprang back).
 bool DockScrollArea::eventFilter(QObject* watched, QEvent* event) {
-    const bool contentsChanged = watched == widget() && event->type() == QEvent::LayoutRequest;
-    const bool barShownOrHidden = watched == verticalScrollBar() &&
-                                  (event->type() == QEvent::Show || event->type() == QEvent::Hide);
-    if (contentsChanged || barShownOrHidden) updateGeometry();
-    if (contentsChanged) emit contentsResized();
+    if (watched == widget() && event->type() == QEvent::LayoutRequest) {
+        const QSize hint = widget()->sizeHint();
+        if (hint != contentsHint_) {
+            const bool taller = hint.height() != contentsHint_.height();
+            contentsHint_ = hint;
+            updateGeometry();
+            if (taller) emit contentsResized();
+        }
+    }
+    if (watched == verticalScrollBar() &&
+        (event->type() == QEvent::Show || event->type() == QEvent::Hide))
+        updateGeometry();
     return QScrollArea::eventFilter(watched, event);
 }
 

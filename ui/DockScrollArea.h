@@ -18,7 +18,7 @@ class DockScrollArea : public QScrollArea {
     QSize minimumSizeHint() const override;
 
   signals:
-    // The contents asked for another size (a section opened, another language).
+    // The contents' size hint changed height (a section opened, another language).
     void contentsResized();
 
   protected:
@@ -26,6 +26,7 @@ class DockScrollArea : public QScrollArea {
 
   private:
     int scrollBarWidth() const;
+    QSize contentsHint_; // the contents' size hint last passed on
 };
 
 } // namespace pf

@@ -516,8 +516,8 @@ void MainWindow::createDocks() {
 // The Parameters and Solver docks get the height of their contents where the window has
 // it, the History what is left: Qt shares a short window's height out by the docks' size
 // hints, and the two panels scrolled at the default 1280 × 800 with the History half
-// empty. Done again when the window or a panel's contents change size, so a dragged
-// splitter lasts until then.
+// empty. Done again when the window is resized or a panel's contents change their size
+// hint (a section opened, another language), so a dragged splitter lasts until then.
 void MainWindow::fitDocks() {
     if (!panelDock_ || !solverDock_) return;
     // (resizeDocks leaves a dock a pixel short of the height asked, and the panel then

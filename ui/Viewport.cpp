@@ -49,13 +49,6 @@ void drawFoldLine(QPainter& painter, const QLine& line) {
 } // namespace
 
 Viewport::Viewport(QWidget* parent) : QWidget(parent), window_(new ViewportWindow(this)) {
-    // A window's update waits for the platform's frame clock; where there is none (X
-    // without a compositor's sync, Xvfb) Qt waits 5 ms, a timer that dropped a third of
-    // the simulation's frames (40 of 59 a second drawn while pushing, with the GUI thread
-    // busy 3 ms a frame; 58 of 58 without the wait). A frame clock, where there is one,
-    // still paces the view; a user's own setting is kept.
-    if (!qEnvironmentVariableIsSet("QT_QPA_UPDATE_IDLE_TIME"))
-        qputenv("QT_QPA_UPDATE_IDLE_TIME", "0");
     setMinimumSize(160, 120);
     options_.pins = true; // the artist sees where the sheet is held
     auto* layout = new QVBoxLayout(this);
@@ -102,6 +95,17 @@ QByteArray Viewport::glRenderer() {
     const QByteArray renderer(name ? name : "");
     context.doneCurrent();
     return renderer;
+}
+
+// A window's update is drawn after Qt's idle time, 5 ms, on X11 (Qt 6.4's xcb keeps the
+// platform's timer): snapshots that came in that wait replaced each other, and the editor
+// drew 40 of the simulation's 59 frames a second while the GUI thread was busy 3 ms a
+// frame. Set before the application exists (Qt reads it once, at the first update) and
+// before any thread starts; a user's own setting is kept. Where a swap waits for the
+// display's refresh, that still paces the view.
+void Viewport::prepareProcess() {
+    if (!qEnvironmentVariableIsSet("QT_QPA_UPDATE_IDLE_TIME"))
+        qputenv("QT_QPA_UPDATE_IDLE_TIME", "0");
 }
 
 QSurfaceFormat Viewport::viewFormat() {

@@ -31,6 +31,9 @@ class Viewport : public QWidget {
 
     // The surface format every viewport asks for: GL 3.3 core, depth, stencil, 4× MSAA.
     static QSurfaceFormat requiredFormat();
+    // Process settings the view needs, before the application is made: a new frame is
+    // drawn at the next turn of the event loop.
+    static void prepareProcess();
     // What the view draws with: the same, without MSAA where GL is drawn by the CPU.
     // Needs the application.
     static QSurfaceFormat viewFormat();

@@ -9,7 +9,6 @@
 #include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace pf {
 
@@ -167,18 +166,9 @@ void ViewportInput::hideTool() {
     sim_->setTool(toolTarget_, toolRadius_, false, false);
 }
 
-// Seen from under the desk, the desk hides the paper and only the pins' marks showed
-// through: an orbit or pan stops with the eye 5 mm above the desk.
 void ViewportInput::look(OrbitCamera camera) {
     const SheetSnapshot* snap = viewport_->snapshot();
-    if (snap && snap->groundEnabled && camera.distance > 0.0) {
-        const double lowest = snap->groundHeight + 0.005;
-        if (camera.eye().y() < lowest) {
-            const double rise =
-                std::clamp((lowest - camera.target.y()) / camera.distance, -1.0, 1.0);
-            camera.pitch = std::min(89.9, std::asin(rise) * 180.0 / std::numbers::pi);
-        }
-    }
+    if (snap && snap->groundEnabled) camera.keepAbove(snap->groundHeight);
     viewport_->setCamera(camera);
 }
 

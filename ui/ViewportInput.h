@@ -76,7 +76,8 @@ class ViewportInput : public QObject {
     Vec3 facing() const; // the view's direction, from the eye
     void hideTool();
     bool orbitPanOrZoom(QEvent* event);
-    // Shows the view from `camera`, its eye kept above the desk.
+    // Shows the view from `camera`, kept above the desk (OrbitCamera::keepAbove): an
+    // orbit, a pan or a zoom stops there.
     void look(OrbitCamera camera);
 
     Viewport* viewport_;

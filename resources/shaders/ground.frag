@@ -6,6 +6,7 @@ uniform vec3 uBackground;
 uniform vec2 uCenter;
 uniform float uReach;
 uniform float uHeight; // of the viewport, in pixels
+uniform vec2 uShade;   // the background's shade, as background.frag has it
 out vec4 fragColor;
 void main() {
     vec2 cell = abs(fract(vXZ / 0.05 + 0.5) - 0.5) / fwidth(vXZ / 0.05);
@@ -13,6 +14,6 @@ void main() {
     vec3 desk = vec3(0.56, 0.55, 0.53) - 0.05 * grid;
     float fade = smoothstep(0.35, 1.0, length(vXZ - uCenter) / uReach);
     float screenY = 2.0 * gl_FragCoord.y / uHeight - 1.0;
-    vec3 background = uBackground * (0.92 + 0.1 * screenY); // as background.frag
+    vec3 background = uBackground * (uShade.x + uShade.y * screenY);
     fragColor = vec4(mix(desk, background, fade), 1.0);
 }

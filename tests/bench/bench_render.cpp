@@ -106,6 +106,7 @@ int main(int argc, char** argv) {
         return offscreen();
     }
     if (mode == "viewport") {
+        Viewport::prepareProcess(); // as the editor does
         QApplication app(argc, argv);
         return viewport();
     }

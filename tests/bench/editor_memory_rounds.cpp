@@ -84,6 +84,7 @@ void crumple(MainWindow& w, double seconds, QRandomGenerator& rng) {
 } // namespace
 
 int main(int argc, char** argv) {
+    Viewport::prepareProcess(); // as the editor does
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("PaperFoldMemoryBench"));
     const int rounds = bench::envInt("ROUNDS", 5);

@@ -45,6 +45,7 @@ QPoint onTheSheet(const Viewport* view, QRandomGenerator& rng) {
 } // namespace
 
 int main(int argc, char** argv) {
+    Viewport::prepareProcess(); // as the editor does
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("PaperFoldPushBench"));
     const int pushSeconds = bench::envInt("PUSH_SECONDS", 120);
@@ -56,7 +57,12 @@ int main(int argc, char** argv) {
     QSize windowSize(1280, 720);
     if (const char* size = std::getenv("PUSH_WINDOW")) {
         const QStringList wh = QString::fromLatin1(size).split(QLatin1Char('x'));
-        if (wh.size() == 2) windowSize = QSize(wh[0].toInt(), wh[1].toInt());
+        const QSize asked = wh.size() == 2 ? QSize(wh[0].toInt(), wh[1].toInt()) : QSize();
+        if (asked.width() < 320 || asked.height() < 240) {
+            std::fprintf(stderr, "PUSH_WINDOW must be WxH, at least 320x240 (got %s)\n", size);
+            return 2;
+        }
+        windowSize = asked;
     }
     if (!bench::showBenchWindow(window, windowSize)) return 2;
     if (const char* sheet = std::getenv("PUSH_SHEET")) {
@@ -73,8 +79,9 @@ int main(int argc, char** argv) {
     sim->setPlaying(true);
 
     QSignalSpy frames(window.viewport(), &Viewport::frameDrawn);
-    // Snapshots the GUI thread took from the simulation, and the GUI thread's share of
-    // each frame drawn (the rest is llvmpipe's rasterising threads and the swap).
+    // Snapshots the GUI thread took from the simulation, and the view's paint per frame
+    // drawn (the GUI thread's drawing; llvmpipe's rasterising threads and the swap, and
+    // the GUI thread's other work, are not in it).
     QSignalSpy snapshots(sim, &SimulationThread::snapshotReady);
     double paintSeconds = 0.0;
     QObject::connect(window.viewport(), &Viewport::frameDrawn,

@@ -27,6 +27,7 @@
 using namespace pf;
 
 int main(int argc, char** argv) {
+    Viewport::prepareProcess(); // as the editor does
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("PaperFoldReplayBench"));
     const char* env = std::getenv("SESSION_SECONDS");
