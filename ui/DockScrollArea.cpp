@@ -39,10 +39,10 @@ bool DockScrollArea::eventFilter(QObject* watched, QEvent* event) {
     if (watched == widget() && event->type() == QEvent::LayoutRequest) {
         const QSize hint = widget()->sizeHint();
         if (hint != contentsHint_) {
-            const bool taller = hint.height() != contentsHint_.height();
+            const bool heightChanged = hint.height() != contentsHint_.height();
             contentsHint_ = hint;
             updateGeometry();
-            if (taller) emit contentsResized();
+            if (heightChanged) emit contentsResized();
         }
     }
     if (watched == verticalScrollBar() &&
