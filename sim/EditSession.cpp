@@ -233,7 +233,7 @@ void EditSession::pullGrabbed() {
 
 void EditSession::setPins(const std::vector<Index>& vertices, bool pinned) {
     Sheet& sheet = sim_.world().sheet;
-    sheet.paper.quietSteps = 0; // a sleeping sheet wakes: what held it may be gone
+    sheet.paper.wake(); // what held it may be gone
     auto& V = sheet.verts;
     for (Index i : vertices) {
         if (i < 0 || i >= V.size()) continue;

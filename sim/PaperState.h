@@ -27,8 +27,16 @@ struct PaperState {
     };
     std::vector<PlasticBend> plastic;
     std::vector<ToolGrip> grips;
-    // Steps in a row in which the sheet was quiet; it sleeps from kStepsBeforeSleep on.
+    // Steps in a row in which no vertex moved farther than a slow drift allows.
     int quietSteps = 0;
+    // Steps in a row in which no vertex went far from where it was when they began
+    // (settledFrom): a sheet caught in a cycle of a few steps goes nowhere, however
+    // much each step moves it (XpbdIntegrator::advance).
+    int settledSteps = 0;
+    std::vector<Vec3> settledFrom;
+    // How fast the sheet slid across the desk, as a whole, in the step before (m/s),
+    // or -1 where that was not measured (sim/DeskHold.h).
+    double deskSlide = -1.0;
     friend bool operator==(const PaperState&, const PaperState&) = default;
 
     // The mesh changed under the sheet (a break, a hinge, a recovery) or its paper did:
@@ -36,7 +44,14 @@ struct PaperState {
     // the change is made, so that a sheet saved right after it resumes exactly.
     void meshChanged() {
         grips.clear();
+        wake();
+    }
+    // Whatever held the sheet may be gone: it is quiet again only from here on.
+    void wake() {
         quietSteps = 0;
+        settledSteps = 0;
+        settledFrom.clear();
+        deskSlide = -1.0;
     }
 };
 

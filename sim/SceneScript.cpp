@@ -29,7 +29,7 @@ void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, Sp
     for (const PinGroup& g : script.pins) {
         if (t < g.release && t + h >= g.release) {
             for (Index i : g.vertices) V.pinned[i] = 0;
-            sheet.paper.quietSteps = 0; // a sleeping sheet wakes: what held it is gone
+            sheet.paper.wake(); // what held it is gone
             continue;
         }
         if (t < g.start) {

@@ -209,6 +209,13 @@ QCborMap sheetToCbor(const Sheet& s) {
     o[QLatin1String("gripCount")] = static_cast<qint64>(s.paper.grips.size());
     o[QLatin1String("grips")] = grips;
     o[QLatin1String("quietSteps")] = s.paper.quietSteps;
+    o[QLatin1String("settledSteps")] = s.paper.settledSteps;
+    o[QLatin1String("deskSlide")] = s.paper.deskSlide;
+    // Where the vertices were when the sheet settled (none, or one per vertex).
+    QByteArray settledFrom;
+    for (const Vec3& p : s.paper.settledFrom) putVec3(settledFrom, p);
+    o[QLatin1String("settledFromCount")] = static_cast<qint64>(s.paper.settledFrom.size());
+    o[QLatin1String("settledFrom")] = settledFrom;
     return o;
 }
 
@@ -446,6 +453,20 @@ Sheet sheetFromCbor(const QCborMap& m) {
         }
         s.paper.quietSteps = static_cast<int>(integerAt(m, "quietSteps", w, 0, 1'000'000'000));
     }
+    // Absent in files from before it: the sheet settles from its first step on.
+    if (m.contains(QLatin1String("settledFromCount"))) {
+        s.paper.settledSteps = static_cast<int>(integerAt(m, "settledSteps", w, 0, 1'000'000'000));
+        const qint64 nq = integerAt(m, "settledFromCount", w, 0, nv);
+        if (nq != 0 && nq != nv)
+            fail(QStringLiteral("%1.settledFromCount: %2 positions for %3 vertices")
+                     .arg(w)
+                     .arg(nq)
+                     .arg(nv));
+        Unpacker u(bytesAt(m, "settledFrom", w, nq, 24));
+        s.paper.settledFrom.resize(static_cast<std::size_t>(nq));
+        for (Vec3& p : s.paper.settledFrom) p = u.vec3();
+        s.paper.deskSlide = realAt(m, "deskSlide", w, -1.0, 1e3);
+    }
     // Files from before load-driven breaking hold no peaks: the sheet counts as having
     // carried the load it stands under, so loading it does not set off a burst of breaks.
     const bool hasPeaks = m.contains(QLatin1String("peakContraction"));
@@ -668,7 +689,11 @@ const CborBounds& sheetFileBounds() {
                                 "plastic",
                                 "gripCount",
                                 "grips",
-                                "quietSteps"})
+                                "quietSteps",
+                                "settledSteps",
+                                "settledFromCount",
+                                "settledFrom",
+                                "deskSlide"})
             b.knownKeys.insert(QString::fromLatin1(key));
         // The deepest path is root → script → pins → group → value; at most 1000 pin
         // groups of seven entries make the most values a valid file holds.

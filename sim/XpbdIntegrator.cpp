@@ -1,5 +1,7 @@
 #include "XpbdIntegrator.h"
 
+#include "DeskHold.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -616,18 +618,18 @@ bool XpbdIntegrator::mustWake(const Sheet& sheet) const {
     return false;
 }
 
-// Quiet is judged on where each vertex went over the whole step, not on its velocity
-// after the last sub-step: a folded sheet whose positions stayed the same to 0.1 mm
-// for minutes kept a sub-step cycle of 2 cm/s on the vertices of its fold and never
-// came to rest.
-bool XpbdIntegrator::shouldSleep(const Sheet& sheet, double dt) const {
-    const auto& V = sheet.verts;
-    constexpr double kQuietSpeed = 5e-4; // m/s
-    const double quiet = kQuietSpeed * dt;
+namespace {
+
+// Whether every free vertex is within reach of where it was (from, one per vertex).
+bool stayedWithin(const Vertices& V, const std::vector<Vec3>& from, double reach) {
+    if (from.size() != V.x.size()) return false;
+    const double reach2 = reach * reach;
     for (Index i = 0; i < V.size(); ++i)
-        if (!V.pinned[i] && (V.x[i] - stepStart_[i]).squaredNorm() > quiet * quiet) return false;
-    return !mustWake(sheet);
+        if (!V.pinned[i] && (V.x[i] - from[i]).squaredNorm() > reach2) return false;
+    return true;
 }
+
+} // namespace
 
 void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     auto& V = sheet.verts;
@@ -660,7 +662,14 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     } else if (solveStep(params) != factoredDt_ || params.bendingDamping != factoredDamping_) {
         factor(sheet, params);
     }
-    asleep_ = sheet.paper.quietSteps >= kStepsBeforeSleep;
+    PaperState& paper = sheet.paper;
+    const int settledStepsBeforeSleep =
+        static_cast<int>(std::ceil(kSecondsSettledBeforeSleep / params.dt - 1e-9));
+    const auto sleepy = [&] {
+        return paper.quietSteps >= kStepsBeforeSleep ||
+               paper.settledSteps >= settledStepsBeforeSleep;
+    };
+    asleep_ = sleepy();
     if (asleep_) {
         if (!mustWake(sheet)) {
             for (Index i = 0; i < nv; ++i)
@@ -668,7 +677,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             return;
         }
         asleep_ = false;
-        sheet.paper.quietSteps = 0;
+        sheet.paper.wake();
     }
 
     const int n = std::max(1, params.substeps);
@@ -707,6 +716,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // Where the tool and the desk hold the same vertex, the tool's friction, the larger
     // (μ_tool > μ_desk), decides the slide, and the desk only keeps it above itself.
     touched_.assign(static_cast<std::size_t>(nv), 0);
+    onDesk_.assign(static_cast<std::size_t>(nv), 0);
     // The tool touches the paper's triangles, not only its vertices: a sphere resting
     // on the desk meets the sheet in a patch a few millimetres wide, smaller than a
     // cell, and would otherwise slide over the paper between vertices without holding
@@ -845,6 +855,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             if (w_[i] == 0.0 || !(V.x[i].y() < gh)) continue;
             const double push = gh - V.x[i].y();
             V.x[i].y() = gh;
+            onDesk_[i] = 1;
             if (touched_[i] || !withFriction) continue;
             Vec3 slip = V.x[i] - xPrev_[i];
             slip.y() = 0.0;
@@ -904,15 +915,37 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     projectStretch(sheet, params.dt, kProjectionIterations);
     collideSphere(sp.center, sp.center, false);
     collideGround(false);
+    const bool onlyTheDesk =
+        contacts_.ground && (!sp.active || toolTriangles_.empty()) && grips.empty() &&
+        std::none_of(V.pinned.begin(), V.pinned.end(), [](std::uint8_t p) { return p != 0; });
+    if (onlyTheDesk)
+        holdOnDesk(V, stepStart_, onDesk_,
+                   {contacts_.groundHeight, g, params.dt, mat.groundKineticFriction},
+                   paper.deskSlide);
+    else
+        paper.deskSlide = kSlideUnknown;
 
-    if (shouldSleep(sheet, params.dt)) {
-        if (++sheet.paper.quietSteps >= kStepsBeforeSleep) {
-            asleep_ = true;
-            for (Index i = 0; i < nv; ++i)
-                if (!V.pinned[i]) V.v[i] = Vec3::Zero();
-        }
+    // Quiet is judged on where each vertex went over the whole step, not on its
+    // velocity after the last sub-step: a folded sheet whose positions stayed the same
+    // to 0.1 mm for minutes kept a sub-step cycle of 2 cm/s on the vertices of its fold
+    // and never came to rest. Nor only on each step's move: a sheet folded twice moved
+    // one vertex of its fold 0.05-0.16 mm a step, in a cycle of about three steps
+    // between the sub-steps and the projection, and went nowhere (docs/material.md,
+    // "Rest").
+    const bool held = !mustWake(sheet);
+    constexpr double kQuietSpeed = 5e-4; // m/s
+    paper.quietSteps =
+        held && stayedWithin(V, stepStart_, kQuietSpeed * params.dt) ? paper.quietSteps + 1 : 0;
+    if (held && stayedWithin(V, paper.settledFrom, kSettledReach)) {
+        ++paper.settledSteps;
     } else {
-        sheet.paper.quietSteps = 0;
+        paper.settledSteps = 0;
+        paper.settledFrom = V.x;
+    }
+    if (sleepy()) {
+        asleep_ = true;
+        for (Index i = 0; i < nv; ++i)
+            if (!V.pinned[i]) V.v[i] = Vec3::Zero();
     }
 }
 

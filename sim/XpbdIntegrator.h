@@ -23,6 +23,11 @@ inline constexpr double kCreaseBendingShare = 0.02;
 // many steps in a row, with no tool moving near it and no pinned vertex moving, falls
 // asleep.
 inline constexpr int kStepsBeforeSleep = 30;
+// So does one whose every free vertex stays within kSettledReach of where it was for
+// this long (a drift of 0.5 mm/s at most, and a jitter of about a pixel where the
+// editor's default view shows the sheet).
+inline constexpr double kSecondsSettledBeforeSleep = 0.5;
+inline constexpr double kSettledReach = 2.5e-4; // m
 // How far below its surface the tool grips the paper it presses onto the desk (m).
 inline constexpr double kToolReach = 0.001;
 // The bending solve runs every this many sub-steps, over their time together. Its step
@@ -126,7 +131,6 @@ class XpbdIntegrator final : public Integrator {
     void yieldPlastically(Sheet& sheet, const Material& m);
     void projectStretch(Sheet& sheet, double dt, int iterations);
     double worstProjectedStretch(const Sheet& sheet) const;
-    bool shouldSleep(const Sheet& sheet, double dt) const;
     bool mustWake(const Sheet& sheet) const;
 
     ContactScene contacts_;
@@ -168,6 +172,7 @@ class XpbdIntegrator final : public Integrator {
     std::vector<Vec3> stepStart_;       // positions before this step's sub-steps
     std::vector<double> w_;             // inverse masses, 0 for pinned vertices
     std::vector<std::uint8_t> touched_; // touched by the tool in this sub-step
+    std::vector<std::uint8_t> onDesk_;  // held up by the desk in this step
     std::vector<Index> toolTriangles_;  // triangles the tool may reach in this step
     // Fast projection: the stretched constraints, their directions, and which of them
     // meet at each vertex.

@@ -5,6 +5,7 @@
 #include "FoldAngle.h"
 #include "FoldPlan.h"
 #include "JacobiScene.h"
+#include "Material.h"
 #include "RecordingFile.h"
 #include "Scenes.h"
 #include "SheetFile.h"
@@ -43,6 +44,18 @@ FoldRequest acrossTheMiddle(double angle = kPi, bool mountain = false) {
 void advanceSeconds(EditSession& s, double seconds) {
     const double end = s.world().time + seconds;
     while (s.world().time < end) QCOMPARE(s.advance(1), StepStatus::Ok);
+}
+
+// How far the farthest vertex goes in the next seconds.
+double stillFor(EditSession& s, double seconds) {
+    const std::vector<Vec3> before = s.world().sheet.verts.x;
+    advanceSeconds(s, seconds);
+    const auto& V = s.world().sheet.verts;
+    if (V.x.size() != before.size()) return 1e9; // it broke
+    double moved = 0.0;
+    for (std::size_t i = 0; i < before.size(); ++i)
+        moved = std::max(moved, (V.x[i] - before[i]).norm());
+    return moved;
 }
 
 // Steps until the fold is let go; returns the seconds it took.
@@ -429,6 +442,44 @@ class TestFoldTool : public QObject {
               100.0 * stretch, right - left);
         QVERIFY(stretch < 0.01); // issue 9's bound, on the slivers the breaks inserted too
         QVERIFY(right - left < 0.16);
+        // And it lies still. It never slept, and crept across the desk at 0.6-4 mm/s for
+        // as long as it was left: a cycle between the sub-steps and the projection that
+        // the desk's friction turned into a walk (sim/DeskHold.h).
+        QVERIFY(s.simulation().asleep());
+        QVERIFY(stillFor(s, 2.0) == 0.0);
+    }
+
+    void aFoldedCardStaysWhereItLies_data() {
+        QTest::addColumn<double>("line");
+        QTest::newRow("once, across the middle") << 1.0;
+        QTest::newRow("twice, through the middle") << 0.0;
+        QTest::newRow("twice, 2 cm off the middle") << 0.02;
+    }
+
+    void aFoldedCardStaysWhereItLies() {
+        // A user's card folded across the middle slid 2.5 m in about 90 s with no input;
+        // folded twice, a card walked up to 17 mm/s headless.
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
+        QFETCH(double, line);
+        World w = makeEditorScene("press", SceneOptions{}, 0.03);
+        w.params.integrator = "xpbd";
+        QVERIFY(materialPreset("card", w.params.material));
+        EditSession s(std::move(w));
+        QCOMPARE(s.advance(120), StepStatus::Ok);
+        QCOMPARE(s.fold(acrossTheMiddle()), FoldRefusal::None);
+        runUntilLetGo(s);
+        if (line < 1.0) {
+            advanceSeconds(s, 1.0);
+            QCOMPARE(s.fold({Vec3(line, 0, -0.2), Vec3(line, 0, 0.2), kPi, false}),
+                     FoldRefusal::None);
+            QVERIFY(runUntilLetGo(s) > 0.0);
+        }
+        advanceSeconds(s, 3.0);
+        const double moved = stillFor(s, 2.0);
+        qInfo("3-5 s after the let-go it moved %.3g mm; asleep: %d", 1e3 * moved,
+              int(s.simulation().asleep()));
+        QVERIFY(s.simulation().asleep());
+        QCOMPARE(moved, 0.0);
     }
 
     void pinnedPaperStaysAndTheOtherSideIsFolded() {

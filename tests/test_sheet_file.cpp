@@ -404,6 +404,39 @@ class TestSheetFile : public QObject {
         }
     }
 
+    void xpbdResumesExactlyWhileItSettlesOnTheDesk() {
+        // A sheet that lands on the desk carries, from step to step, how fast it slid
+        // across it (sim/DeskHold.h) and where it began to settle: saved while it slides
+        // and while it settles, it resumes bit for bit and falls asleep at the same step.
+        World start = *makeScene("drop");
+        start.params.integrator = "xpbd";
+        Simulation whole(start);
+        std::vector<Simulation> resumed;
+        bool sawSlide = false, sawSettling = false;
+        for (int k = 1; k <= 150; ++k) {
+            QCOMPARE(whole.step(), StepStatus::Ok);
+            const PaperState& state = whole.world().sheet.paper;
+            const bool sliding = !sawSlide && state.deskSlide > 0.0;
+            const bool settling = !sawSettling && state.settledSteps > 10 && !whole.asleep();
+            if (!sliding && !settling) continue;
+            sawSlide = sawSlide || sliding;
+            sawSettling = sawSettling || settling;
+            const WorldLoad l = decodeWorld(encodeWorld(whole.world()));
+            QVERIFY2(l.world, qPrintable(l.error));
+            QVERIFY(l.world->sheet.paper == state);
+            resumed.emplace_back(*l.world);
+        }
+        QVERIFY2(sawSlide, "the sheet never slid on the desk");
+        QVERIFY2(sawSettling, "the sheet never settled");
+        QVERIFY(whole.asleep());
+        for (Simulation& r : resumed) {
+            while (r.world().stepCount < whole.world().stepCount)
+                QCOMPARE(r.step(), StepStatus::Ok);
+            QCOMPARE(r.asleep(), whole.asleep());
+            QCOMPARE(encodeWorld(r.world()), encodeWorld(whole.world()));
+        }
+    }
+
     void saveIsAtomicAndFailsCleanly() {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("sheet.paper"));
@@ -462,6 +495,18 @@ class TestSheetFile : public QObject {
             << withPaperState(0, {}, 1, toolGrip(0, 1, 1, 0)) << "tool grip is malformed";
         QTest::newRow("more grips than triangles")
             << withPaperState(0, {}, qint64(1) << 40, {}) << "gripCount";
+        QTest::newRow("settled positions for three vertices") << [] {
+            QCborMap root = QCborValue::fromCbor(validFile()).toMap();
+            QCborMap sheet = root[QLatin1String("sheet")].toMap();
+            sheet[QLatin1String("settledFromCount")] = 3;
+            sheet[QLatin1String("settledFrom")] = f64s({0, 0, 0, 0, 0, 0, 0, 0, 0});
+            root[QLatin1String("sheet")] = sheet;
+            return QCborValue(root).toCbor();
+        }() << "3 positions for";
+        QTest::newRow("a slide of negative speed")
+            << withField({"sheet", "deskSlide"}, -0.5) << "slide across the desk";
+        QTest::newRow("a slide faster than sound")
+            << withField({"sheet", "deskSlide"}, 1e6) << "deskSlide";
         QTest::newRow("huge vertex count")
             << withField({"sheet", "vertexCount"}, qint64(1) << 40) << "vertexCount";
         QTest::newRow("count disagrees with bytes")

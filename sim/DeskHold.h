@@ -1,0 +1,51 @@
+#pragma once
+
+#include "Sheet.h"
+#include "Types.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace pf {
+
+// Coulomb's law for the sheet as a whole on the desk.
+//
+// Inside a step, the sub-steps and the stretch projection can disagree on where a
+// light crease vertex belongs (docs/material.md, "What is open"): each sub-step throws
+// it out and the projection puts it back. Every such swing slips vertices on the desk
+// past their static friction, one way and back, and the two halves of the swing do not
+// cancel. So a folded sheet whose shape no longer changed slid across the desk as a
+// rigid body, for ever, with nothing pushing it: 1-4 mm/s, and up to 34 mm/s where
+// the swing was as strong as kinetic friction itself.
+//
+// Real paper cannot do that. Its internal forces sum to nothing, gravity presses it
+// onto the desk, and the desk's friction slows whatever slides on it by μk·g (less any
+// pull down a tilted desk). So, unless a tool, a pin or a hand holds the sheet, its
+// rigid slide across the desk (how the vertices the desk holds up shift and turn,
+// together, over the step) may only slow down from one step to the next, by at least
+// kFrictionShare of that, and once stopped it stays stopped. What it gains beyond that
+// is undone, and only that: the shape of the sheet is never touched.
+struct DeskHoldScene {
+    double groundHeight = 0.0;
+    Vec3 gravity = Vec3::Zero(); // acceleration, with any tilt of the desk
+    double dt = 0.0;
+    double kineticFriction = 0.0;
+};
+
+// The share of kinetic friction's slowing the rule asks for at least: a sheet lying on
+// the desk rests all its weight on it, one part-lifted by its own folds less.
+inline constexpr double kFrictionShare = 0.5;
+
+// The slide's speed in the step before, where no slide was measured (the sheet was
+// held, lifted, or pushed down a desk steeper than atan μk).
+inline constexpr double kSlideUnknown = -1.0;
+
+// The caller has made sure that only the desk and gravity act on the sheet (no pins, no
+// hand, no tool within reach), and says which vertices the desk held up in this step
+// (contact). slide is the slide's speed at the step before (m/s, or kSlideUnknown) and
+// becomes this step's. Returns whether a part of the step's rigid motion was undone.
+bool holdOnDesk(Vertices& verts, const std::vector<Vec3>& stepStart,
+                const std::vector<std::uint8_t>& contact, const DeskHoldScene& scene,
+                double& slide);
+
+} // namespace pf

@@ -1,0 +1,200 @@
+// Coulomb's law for the sheet as a whole on the desk (sim/DeskHold): the rigid creep
+// across the desk that friction would have stopped within the step is undone, a slide
+// faster than that or down a desk steeper than friction holds goes on, and the shape of
+// the sheet is never touched. The bounds are worked out here from μ, g and dt.
+#include "DeskHold.h"
+
+#include <QTest>
+#include <cmath>
+
+using namespace pf;
+
+namespace {
+
+constexpr double kG = 9.81;
+constexpr double kDt = 1.0 / 240.0;
+constexpr double kKinetic = 0.35;
+
+// A 5 × 5 grid of 1 cm cells lying on the desk (y = 0), its centre at (0.3, 0, -0.2).
+Vertices grid() {
+    Vertices V;
+    for (int r = 0; r < 5; ++r)
+        for (int c = 0; c < 5; ++c) {
+            V.x.push_back(Vec3(0.3 + 0.01 * (c - 2), 0.0, -0.2 + 0.01 * (r - 2)));
+            V.v.push_back(Vec3::Zero());
+            V.m.push_back(8e-6);
+            V.X.push_back(Vec2(0.01 * c, 0.01 * r));
+            V.pinned.push_back(0);
+        }
+    return V;
+}
+
+DeskHoldScene flatDesk() {
+    return {0.0, Vec3(0.0, -kG, 0.0), kDt, kKinetic};
+}
+
+// A desk tilted about z so that gravity pulls along x with tan α.
+DeskHoldScene tiltedDesk(double tanAlpha) {
+    const double alpha = std::atan(tanAlpha);
+    return {0.0, kG * Vec3(std::sin(alpha), -std::cos(alpha), 0.0), kDt, kKinetic};
+}
+
+// Moves every vertex by shift and turns it by theta about the vertical through the
+// grid's centre, as the fit reads a turn (θ ŷ × r), and gives it the matching velocity.
+void moveRigidly(Vertices& V, const Vec3& shift, double theta) {
+    const Vec3 centre(0.3, 0.0, -0.2);
+    for (Index i = 0; i < V.size(); ++i) {
+        const Vec3 r = V.x[i] - centre;
+        const Vec3 d = shift + theta * Vec3(r.z(), 0.0, -r.x());
+        V.x[i] += d;
+        V.v[i] = d / kDt;
+    }
+}
+
+double farthest(const Vertices& V, const std::vector<Vec3>& from) {
+    double d = 0.0;
+    for (Index i = 0; i < V.size(); ++i) d = std::max(d, (V.x[i] - from[i]).norm());
+    return d;
+}
+
+// How much a slide across the flat desk must slow at least in one step (m/s): half of
+// what kinetic friction takes out of it.
+constexpr double kLeastSlowing = 0.5 * kKinetic * kG * kDt;
+
+const std::vector<std::uint8_t> kAll(25, 1);
+
+} // namespace
+
+class TestDeskHold : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void aSheetAtRestStaysAtRest() {
+        // A folded sheet crept 1-1.3 mm/s, as a rigid body, with nothing pushing it.
+        Vertices V = grid();
+        const std::vector<Vec3> start = V.x;
+        moveRigidly(V, Vec3(1.2e-3 * kDt, 0.0, -0.4e-3 * kDt), 0.02 * kDt);
+        QVERIFY(farthest(V, start) > 4e-6);
+        double slide = 0.0;
+        QVERIFY(holdOnDesk(V, start, kAll, flatDesk(), slide));
+        QVERIFY2(farthest(V, start) < 1e-12, qPrintable(QString::number(farthest(V, start))));
+        for (const Vec3& v : V.v) QVERIFY(v.norm() < 1e-9); // its rigid velocity goes too
+        QCOMPARE(slide, 0.0);
+    }
+
+    void aSlideSlowsAtLeastAtHalfOfFriction() {
+        const double before = 0.034; // m/s, as fast as one folded card walked
+        for (const double now :
+             {before, before - 0.9 * kLeastSlowing, before - 1.1 * kLeastSlowing}) {
+            Vertices V = grid();
+            const std::vector<Vec3> start = V.x;
+            moveRigidly(V, Vec3(0.6, 0.0, 0.8) * (now * kDt), 0.0);
+            const std::vector<Vec3> moved = V.x;
+            double slide = before;
+            const bool cut = holdOnDesk(V, start, kAll, flatDesk(), slide);
+            const double allowed = before - kLeastSlowing;
+            QCOMPARE(cut, now > allowed);
+            QVERIFY(std::abs(slide - std::min(now, allowed)) < 1e-12);
+            // The step's move, cut to the allowed speed, or left as it was.
+            QVERIFY(std::abs(farthest(V, start) - std::min(now, allowed) * kDt) < 1e-15);
+            if (!cut) QCOMPARE(V.x, moved);
+        }
+    }
+
+    void aSlideThatWasNotMeasuredGoesOn() {
+        Vertices V = grid();
+        const std::vector<Vec3> start = V.x;
+        moveRigidly(V, Vec3(0.5 * kDt, 0.0, 0.0), 0.0);
+        const std::vector<Vec3> moved = V.x;
+        double slide = kSlideUnknown;
+        QVERIFY(!holdOnDesk(V, start, kAll, flatDesk(), slide));
+        QCOMPARE(V.x, moved);
+        QVERIFY(std::abs(slide - 0.5) < 1e-12);
+    }
+
+    void aDrivenSlideStopsAndStaysStopped() {
+        // Something drives the sheet at 34 mm/s every step, as the sub-steps' swing did a
+        // folded card: it stops within the steps friction's half needs, and stays.
+        double slide = kSlideUnknown;
+        const int needed = static_cast<int>(std::ceil(0.034 / kLeastSlowing));
+        Vertices V = grid();
+        for (int step = 0; step < needed + 10; ++step) {
+            const std::vector<Vec3> start = V.x;
+            moveRigidly(V, Vec3(0.034 * kDt, 0.0, 0.0), 0.0);
+            holdOnDesk(V, start, kAll, flatDesk(), slide);
+            if (step >= needed)
+                QCOMPARE(farthest(V, start), 0.0);
+            else
+                QVERIFY(farthest(V, start) > 0.0);
+        }
+        QCOMPARE(slide, 0.0);
+    }
+
+    void aTurnCountsWhereTheContactsAre() {
+        // The turn's speed is taken at the contacts' root mean square distance from
+        // their centre.
+        Vertices V = grid();
+        double inertia = 0.0;
+        for (const Vec3& x : V.x) inertia += (x - Vec3(0.3, 0.0, -0.2)).squaredNorm();
+        const double radius = std::sqrt(inertia / 25.0);
+        for (const double share : {0.98, 1.02}) {
+            Vertices W = grid();
+            const std::vector<Vec3> start = W.x;
+            const double before = 0.01;
+            moveRigidly(W, Vec3::Zero(), share * (before - kLeastSlowing) * kDt / radius);
+            double slide = before;
+            QCOMPARE(holdOnDesk(W, start, kAll, flatDesk(), slide), share > 1.0);
+        }
+    }
+
+    void aSteepDeskLetsTheSheetSlide() {
+        // Below atan μk the pull down the slope takes its part of friction's slowing.
+        const double gentle = 0.2;
+        const double pull = kG * std::sin(std::atan(gentle));
+        const double pressing = kG * std::cos(std::atan(gentle));
+        const double least = 0.5 * (kKinetic * pressing - pull) * kDt;
+        for (const double share : {0.98, 1.02}) {
+            Vertices V = grid();
+            const std::vector<Vec3> start = V.x;
+            moveRigidly(V, Vec3((0.01 - share * least) * kDt, 0.0, 0.0), 0.0);
+            double slide = 0.01;
+            QCOMPARE(holdOnDesk(V, start, kAll, tiltedDesk(gentle), slide), share < 1.0);
+        }
+        // Beyond atan μk a sliding sheet speeds up: the sub-steps' own friction decides.
+        Vertices V = grid();
+        const std::vector<Vec3> start = V.x;
+        moveRigidly(V, Vec3(1e-6, 0.0, 0.0), 0.0);
+        double slide = 0.0;
+        QVERIFY(!holdOnDesk(V, start, kAll, tiltedDesk(kKinetic + 0.02), slide));
+        QCOMPARE(slide, kSlideUnknown);
+    }
+
+    void theShapeIsNeverTouched() {
+        // The fit takes only the vertices on the desk; what the rest of the sheet does
+        // relative to them (a flap lifting, an edge drawn in) stays.
+        Vertices V = grid();
+        const std::vector<Vec3> start = V.x;
+        std::vector<std::uint8_t> contact = kAll;
+        for (Index i = 20; i < 25; ++i) contact[i] = 0; // the last row is lifted off
+        for (Index i = 20; i < 25; ++i) V.x[i] += Vec3(0.0, 1e-3, -2e-5);
+        const std::vector<Vec3> shaped = V.x;
+        moveRigidly(V, Vec3(3e-6, 0.0, 1e-6), 0.0);
+        double slide = 0.0;
+        QVERIFY(holdOnDesk(V, start, contact, flatDesk(), slide));
+        for (Index i = 0; i < V.size(); ++i) QVERIFY((V.x[i] - shaped[i]).norm() < 1e-12);
+    }
+
+    void nothingOnTheDeskIsNotHeld() {
+        Vertices V = grid();
+        const std::vector<Vec3> start = V.x;
+        moveRigidly(V, Vec3(1e-6, 0.0, 0.0), 0.0);
+        const std::vector<Vec3> moved = V.x;
+        double slide = 0.0;
+        QVERIFY(!holdOnDesk(V, start, std::vector<std::uint8_t>(25, 0), flatDesk(), slide));
+        QCOMPARE(V.x, moved);
+        QCOMPARE(slide, kSlideUnknown);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestDeskHold)
+#include "test_desk_hold.moc"
