@@ -19,34 +19,35 @@ struct RigidMotion {
     double radius = 0.0;        // root mean square distance from centre
 };
 
-// The least-squares rigid motion across the desk of the vertices in contact, from
-// where each was (from) to where it is (to): a shift and a small turn.
-template <typename From, typename To>
-RigidMotion fitRigidMotion(const Vertices& V, const std::vector<std::uint8_t>& contact, From from,
-                           To to) {
+// The least-squares rigid motion across the desk of the vertices in contact, from where
+// each was (from) to where it is (to): a shift and a small turn.
+RigidMotion fitRigidMotion(const std::vector<double>& mass,
+                           const std::vector<std::uint8_t>& contact, const std::vector<Vec3>& from,
+                           const std::vector<Vec3>& to) {
     RigidMotion r;
-    double mass = 0.0;
-    for (Index i = 0; i < V.size(); ++i) {
+    double total = 0.0;
+    for (std::size_t i = 0; i < from.size(); ++i) {
         if (!contact[i]) continue;
-        mass += V.m[i];
-        r.centre += V.m[i] * from(i);
-        r.shift += V.m[i] * (to(i) - from(i));
+        total += mass[i];
+        r.centre += mass[i] * from[i];
+        r.shift += mass[i] * (to[i] - from[i]);
     }
-    r.centre /= mass;
+    if (!(total > 0.0)) return {};
+    r.centre /= total;
     r.centre.y() = 0.0;
-    r.shift /= mass;
+    r.shift /= total;
     r.shift.y() = 0.0;
-    double torque = 0.0, inertia = 0.0;
-    for (Index i = 0; i < V.size(); ++i) {
+    double turning = 0.0, inertia = 0.0; // Σ m (r × d)·ŷ and Σ m |r|², r across the desk
+    for (std::size_t i = 0; i < from.size(); ++i) {
         if (!contact[i]) continue;
-        Vec3 arm = from(i) - r.centre;
+        Vec3 arm = from[i] - r.centre;
         arm.y() = 0.0;
-        const Vec3 d = to(i) - from(i) - r.shift;
-        torque += V.m[i] * (arm.z() * d.x() - arm.x() * d.z());
-        inertia += V.m[i] * arm.squaredNorm();
+        const Vec3 d = to[i] - from[i] - r.shift;
+        turning += mass[i] * (arm.z() * d.x() - arm.x() * d.z());
+        inertia += mass[i] * arm.squaredNorm();
     }
-    r.theta = inertia > 0.0 ? torque / inertia : 0.0;
-    r.radius = std::sqrt(inertia / mass);
+    r.theta = inertia > 0.0 ? turning / inertia : 0.0;
+    r.radius = std::sqrt(inertia / total);
     return r;
 }
 
@@ -64,8 +65,7 @@ bool holdOnDesk(Vertices& V, const std::vector<Vec3>& stepStart,
         slide = kSlideUnknown;
         return false;
     }
-    const RigidMotion moved = fitRigidMotion(
-        V, contact, [&](Index i) { return stepStart[i]; }, [&](Index i) { return V.x[i]; });
+    const RigidMotion moved = fitRigidMotion(V.m, contact, stepStart, V.x);
     const double speed =
         std::max(moved.shift.norm(), std::abs(moved.theta) * moved.radius) / scene.dt;
     const double allowed =

@@ -931,7 +931,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // and never came to rest. Nor only on each step's move: a sheet folded twice moved
     // one vertex of its fold 0.05-0.16 mm a step, in a cycle of about three steps
     // between the sub-steps and the projection, and went nowhere (docs/material.md,
-    // "Rest").
+    // "Sleep").
     const bool held = !mustWake(sheet);
     constexpr double kQuietSpeed = 5e-4; // m/s
     paper.quietSteps =
