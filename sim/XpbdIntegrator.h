@@ -24,10 +24,10 @@ inline constexpr double kCreaseBendingShare = 0.02;
 // asleep.
 inline constexpr int kStepsBeforeSleep = 30;
 // So does one whose every free vertex stays within kSettledReach of where it was for
-// this long (a drift of 0.5 mm/s at most, and a jitter of about a pixel where the
-// editor's default view shows the sheet).
-inline constexpr double kSecondsSettledBeforeSleep = 0.5;
-inline constexpr double kSettledReach = 2.5e-4; // m
+// this long: a drift of 0.5 mm/s at most, and a jitter of about two pixels where the
+// editor's default view shows the sheet.
+inline constexpr double kSecondsSettledBeforeSleep = 1.0;
+inline constexpr double kSettledReach = 5e-4; // m
 // How far below its surface the tool grips the paper it presses onto the desk (m).
 inline constexpr double kToolReach = 0.001;
 // The bending solve runs every this many sub-steps, over their time together. Its step

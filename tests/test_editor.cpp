@@ -469,6 +469,9 @@ class TestEditor : public QObject {
                 fps = label->text().split(u' ')[0].toInt();
         }
         QVERIFY2(fps >= 0 && fps <= 2, qPrintable(shown.join(QStringLiteral(" | "))));
+        // And it says the sheet is at rest, not only that a step is cheap.
+        QVERIFY2(shown.join(QStringLiteral(" | ")).contains(QStringLiteral(" · at rest")),
+                 qPrintable(shown.join(QStringLiteral(" | "))));
         window->action("overlay.wireframe")->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(frames.count() > still, kSignalWaitMs);
         window->simulation()->setPlaying(false);
@@ -587,6 +590,13 @@ class TestEditor : public QObject {
         for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
         QVERIFY2(shown.contains(
                      QStringLiteral("494 vertices · 2700 springs · 1 break (1/s) · 2 hinges")),
+                 qPrintable(shown.join(QStringLiteral(" | "))));
+        QVERIFY(shown.contains(QStringLiteral("step 0 µs")));
+        st.resting = true;
+        readout.show(st);
+        shown.clear();
+        for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
+        QVERIFY2(shown.contains(QStringLiteral("step 0 µs · at rest")),
                  qPrintable(shown.join(QStringLiteral(" | "))));
         QVERIFY(!installLanguage(QStringLiteral("fr")));
         QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Pin 1 vertex"));

@@ -839,6 +839,10 @@
         <translation>Schritt %1 µs</translation>
     </message>
     <message>
+        <source>%1 · at rest</source>
+        <translation>%1 · in Ruhe</translation>
+    </message>
+    <message>
         <source>%1 vertices · %2 springs · %3 (%4/s) · %5</source>
         <translation>%1 Knoten · %2 Federn · %3 (%4/s) · %5</translation>
     </message>

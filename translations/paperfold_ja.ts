@@ -832,6 +832,10 @@
         <translation>ステップ %1 µs</translation>
     </message>
     <message>
+        <source>%1 · at rest</source>
+        <translation>%1 · 静止</translation>
+    </message>
+    <message>
         <source>%1 vertices · %2 springs · %3 (%4/s) · %5</source>
         <translation>頂点 %1 · ばね %2 · %3 (%4/秒) · %5</translation>
     </message>

@@ -832,6 +832,10 @@
         <translation>단계 %1 µs</translation>
     </message>
     <message>
+        <source>%1 · at rest</source>
+        <translation>%1 · 정지</translation>
+    </message>
+    <message>
         <source>%1 vertices · %2 springs · %3 (%4/s) · %5</source>
         <translation>정점 %1 · 스프링 %2 · %3 (%4/초) · %5</translation>
     </message>

@@ -17,6 +17,7 @@ struct SimulationStatus {
     int threads = 1; // the step runs on
     bool playing = false;
     bool folding = false;        // a fold is under way: undo, redo and the other tools wait
+    bool resting = false;        // the sheet sleeps: at rest, and costs almost nothing
     std::uint64_t sheetHash = 0; // editedStateHash: tells whether it differs from a file
 };
 

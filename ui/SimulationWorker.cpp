@@ -165,6 +165,7 @@ void SimulationWorker::publish(double stepSeconds) {
     st.threads = session_.simulation().threads();
     st.playing = playing_;
     st.folding = session_.folding();
+    st.resting = session_.simulation().asleep();
     st.sheetHash = editedStateHash(w.sheet);
     emit published(std::make_shared<const SheetSnapshot>(makeSnapshot(session_.simulation())), st);
 }
