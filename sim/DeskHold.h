@@ -24,9 +24,11 @@ namespace pf {
 // rigid slide across the desk (how the vertices the desk holds up shift and turn,
 // together, over the step) may only slow down from one step to the next, by at least
 // kFrictionShare of that, and once stopped it stays stopped. What it gains beyond that
-// is undone, and only that: the shape of the sheet is never touched.
+// is undone, and only that: the shape of the sheet is never touched. While the sheet
+// as a whole rises or falls faster than friction's μk·g·dt (it lands, topples, or a
+// flap falls onto the rest), its lifted part may push the part on the desk, and the
+// slide is not measured.
 struct DeskHoldScene {
-    double groundHeight = 0.0;
     Vec3 gravity = Vec3::Zero(); // acceleration, with any tilt of the desk
     double dt = 0.0;
     double kineticFriction = 0.0;
@@ -35,10 +37,6 @@ struct DeskHoldScene {
 // The share of kinetic friction's slowing the rule asks for at least: a sheet lying on
 // the desk rests all its weight on it, one part-lifted by its own folds less.
 inline constexpr double kFrictionShare = 0.5;
-
-// The slide's speed in the step before, where no slide was measured (the sheet was
-// held, lifted, or pushed down a desk steeper than atan μk).
-inline constexpr double kSlideUnknown = -1.0;
 
 // The caller has made sure that only the desk and gravity act on the sheet (no pins, no
 // hand, no tool within reach), and says which vertices the desk held up in this step

@@ -686,6 +686,7 @@ void EditSession::finishFold() {
                 sim_.world().sheet.verts.pinned[i] = 0;
     if (foldGroup_ < groups.size())
         groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(foldGroup_), groups.end());
+    sim_.world().sheet.paper.wake(); // what held the flap is gone
     foldGroup_ = kNoFold;
     finished_ = endStroke(StrokeKind::Fold);
 }

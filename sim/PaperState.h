@@ -7,6 +7,9 @@
 
 namespace pf {
 
+// PaperState::deskSlide where no slide was measured in the step before.
+inline constexpr double kSlideUnknown = -1.0;
+
 // What the "xpbd" integrator carries from one step to the next beyond positions and
 // velocities. It lives with the sheet so that a saved sheet resumes exactly and keeps
 // its folds, and so that undo gives back the state the user saw.
@@ -29,14 +32,14 @@ struct PaperState {
     std::vector<ToolGrip> grips;
     // Steps in a row in which no vertex moved farther than a slow drift allows.
     int quietSteps = 0;
-    // Steps in a row in which no vertex went far from where it was when they began
-    // (settledFrom): a sheet caught in a cycle of a few steps goes nowhere, however
-    // much each step moves it (XpbdIntegrator::advance).
-    int settledSteps = 0;
-    std::vector<Vec3> settledFrom;
+    // Steps in a row in which no vertex went farther than kStillReach from where it
+    // was when they began (stillFrom): a sheet caught in a cycle of a few steps goes
+    // nowhere, though each step moves it (XpbdIntegrator::advance).
+    int stillSteps = 0;
+    std::vector<Vec3> stillFrom;
     // How fast the sheet slid across the desk, as a whole, in the step before (m/s),
-    // or -1 where that was not measured (sim/DeskHold.h).
-    double deskSlide = -1.0;
+    // or kSlideUnknown (sim/DeskHold.h).
+    double deskSlide = kSlideUnknown;
     friend bool operator==(const PaperState&, const PaperState&) = default;
 
     // The mesh changed under the sheet (a break, a hinge, a recovery) or its paper did:
@@ -49,9 +52,9 @@ struct PaperState {
     // Whatever held the sheet may be gone: it is quiet again only from here on.
     void wake() {
         quietSteps = 0;
-        settledSteps = 0;
-        settledFrom.clear();
-        deskSlide = -1.0;
+        stillSteps = 0;
+        stillFrom.clear();
+        deskSlide = kSlideUnknown;
     }
 };
 

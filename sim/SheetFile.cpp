@@ -209,13 +209,13 @@ QCborMap sheetToCbor(const Sheet& s) {
     o[QLatin1String("gripCount")] = static_cast<qint64>(s.paper.grips.size());
     o[QLatin1String("grips")] = grips;
     o[QLatin1String("quietSteps")] = s.paper.quietSteps;
-    o[QLatin1String("settledSteps")] = s.paper.settledSteps;
+    o[QLatin1String("stillSteps")] = s.paper.stillSteps;
     o[QLatin1String("deskSlide")] = s.paper.deskSlide;
-    // Where the vertices were when the sheet settled (none, or one per vertex).
-    QByteArray settledFrom;
-    for (const Vec3& p : s.paper.settledFrom) putVec3(settledFrom, p);
-    o[QLatin1String("settledFromCount")] = static_cast<qint64>(s.paper.settledFrom.size());
-    o[QLatin1String("settledFrom")] = settledFrom;
+    // Where the vertices were when the sheet fell still (none, or one per vertex).
+    QByteArray stillFrom;
+    for (const Vec3& p : s.paper.stillFrom) putVec3(stillFrom, p);
+    o[QLatin1String("stillFromCount")] = static_cast<qint64>(s.paper.stillFrom.size());
+    o[QLatin1String("stillFrom")] = stillFrom;
     return o;
 }
 
@@ -454,17 +454,17 @@ Sheet sheetFromCbor(const QCborMap& m) {
         s.paper.quietSteps = static_cast<int>(integerAt(m, "quietSteps", w, 0, 1'000'000'000));
     }
     // Absent in files from before it: the sheet settles from its first step on.
-    if (m.contains(QLatin1String("settledFromCount"))) {
-        s.paper.settledSteps = static_cast<int>(integerAt(m, "settledSteps", w, 0, 1'000'000'000));
-        const qint64 nq = integerAt(m, "settledFromCount", w, 0, nv);
+    if (m.contains(QLatin1String("stillFromCount"))) {
+        s.paper.stillSteps = static_cast<int>(integerAt(m, "stillSteps", w, 0, 1'000'000'000));
+        const qint64 nq = integerAt(m, "stillFromCount", w, 0, nv);
         if (nq != 0 && nq != nv)
-            fail(QStringLiteral("%1.settledFromCount: %2 positions for %3 vertices")
+            fail(QStringLiteral("%1.stillFromCount: %2 positions for %3 vertices")
                      .arg(w)
                      .arg(nq)
                      .arg(nv));
-        Unpacker u(bytesAt(m, "settledFrom", w, nq, 24));
-        s.paper.settledFrom.resize(static_cast<std::size_t>(nq));
-        for (Vec3& p : s.paper.settledFrom) p = u.vec3();
+        Unpacker u(bytesAt(m, "stillFrom", w, nq, 24));
+        s.paper.stillFrom.resize(static_cast<std::size_t>(nq));
+        for (Vec3& p : s.paper.stillFrom) p = u.vec3();
         s.paper.deskSlide = realAt(m, "deskSlide", w, -1.0, 1e3);
     }
     // Files from before load-driven breaking hold no peaks: the sheet counts as having
@@ -690,9 +690,9 @@ const CborBounds& sheetFileBounds() {
                                 "gripCount",
                                 "grips",
                                 "quietSteps",
-                                "settledSteps",
-                                "settledFromCount",
-                                "settledFrom",
+                                "stillSteps",
+                                "stillFromCount",
+                                "stillFrom",
                                 "deskSlide"})
             b.knownKeys.insert(QString::fromLatin1(key));
         // The deepest path is root → script → pins → group → value; at most 1000 pin

@@ -182,14 +182,14 @@ std::string validateSheet(const Sheet& sheet) {
             return "a tool grip is malformed";
     }
     if (sheet.paper.quietSteps < 0) return "negative quiet steps";
-    if (sheet.paper.settledSteps < 0) return "negative settled steps";
-    const auto& settledFrom = sheet.paper.settledFrom;
-    if (!settledFrom.empty() && settledFrom.size() != static_cast<std::size_t>(nv))
-        return "the settled positions do not match the vertices";
-    for (const Vec3& p : settledFrom)
-        if (!finite(p)) return "a settled position is not finite";
+    if (sheet.paper.stillSteps < 0) return "negative still steps";
+    const auto& stillFrom = sheet.paper.stillFrom;
+    if (!stillFrom.empty() && stillFrom.size() != static_cast<std::size_t>(nv))
+        return "the still positions do not match the vertices";
+    for (const Vec3& p : stillFrom)
+        if (!finite(p)) return "a still position is not finite";
     const double slide = sheet.paper.deskSlide;
-    if (!(slide == -1.0 || (std::isfinite(slide) && slide >= 0.0)))
+    if (!(slide == kSlideUnknown || (std::isfinite(slide) && slide >= 0.0)))
         return "the sheet's slide across the desk is malformed";
     return {};
 }

@@ -663,17 +663,19 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         factor(sheet, params);
     }
     PaperState& paper = sheet.paper;
-    const int settledStepsBeforeSleep =
-        static_cast<int>(std::ceil(kSecondsSettledBeforeSleep / params.dt - 1e-9));
+    const int stillStepsBeforeSleep =
+        static_cast<int>(std::ceil(kSecondsStillBeforeSleep / params.dt - 1e-9));
     const auto sleepy = [&] {
-        return paper.quietSteps >= kStepsBeforeSleep ||
-               paper.settledSteps >= settledStepsBeforeSleep;
+        return paper.quietSteps >= kStepsBeforeSleep || paper.stillSteps >= stillStepsBeforeSleep;
+    };
+    const auto stopFreeVertices = [&] {
+        for (Index i = 0; i < nv; ++i)
+            if (!V.pinned[i]) V.v[i] = Vec3::Zero();
     };
     asleep_ = sleepy();
     if (asleep_) {
         if (!mustWake(sheet)) {
-            for (Index i = 0; i < nv; ++i)
-                if (!V.pinned[i]) V.v[i] = Vec3::Zero();
+            stopFreeVertices();
             return;
         }
         asleep_ = false;
@@ -919,8 +921,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         contacts_.ground && (!sp.active || toolTriangles_.empty()) && grips.empty() &&
         std::none_of(V.pinned.begin(), V.pinned.end(), [](std::uint8_t p) { return p != 0; });
     if (onlyTheDesk)
-        holdOnDesk(V, stepStart_, onDesk_,
-                   {contacts_.groundHeight, g, params.dt, mat.groundKineticFriction},
+        holdOnDesk(V, stepStart_, onDesk_, {g, params.dt, mat.groundKineticFriction},
                    paper.deskSlide);
     else
         paper.deskSlide = kSlideUnknown;
@@ -932,20 +933,20 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // one vertex of its fold 0.05-0.16 mm a step, in a cycle of about three steps
     // between the sub-steps and the projection, and went nowhere (docs/material.md,
     // "Sleep").
-    const bool held = !mustWake(sheet);
+    const bool undisturbed = !mustWake(sheet);
     constexpr double kQuietSpeed = 5e-4; // m/s
-    paper.quietSteps =
-        held && stayedWithin(V, stepStart_, kQuietSpeed * params.dt) ? paper.quietSteps + 1 : 0;
-    if (held && stayedWithin(V, paper.settledFrom, kSettledReach)) {
-        ++paper.settledSteps;
+    paper.quietSteps = undisturbed && stayedWithin(V, stepStart_, kQuietSpeed * params.dt)
+                           ? paper.quietSteps + 1
+                           : 0;
+    if (undisturbed && stayedWithin(V, paper.stillFrom, kStillReach)) {
+        ++paper.stillSteps;
     } else {
-        paper.settledSteps = 0;
-        paper.settledFrom = V.x;
+        paper.stillSteps = 0;
+        paper.stillFrom = V.x;
     }
     if (sleepy()) {
         asleep_ = true;
-        for (Index i = 0; i < nv; ++i)
-            if (!V.pinned[i]) V.v[i] = Vec3::Zero();
+        stopFreeVertices();
     }
 }
 

@@ -23,11 +23,11 @@ inline constexpr double kCreaseBendingShare = 0.02;
 // many steps in a row, with no tool moving near it and no pinned vertex moving, falls
 // asleep.
 inline constexpr int kStepsBeforeSleep = 30;
-// So does one whose every free vertex stays within kSettledReach of where it was for
+// So does one whose every free vertex stays within kStillReach of where it was for
 // this long: a drift of 0.5 mm/s at most, and a jitter of about two pixels where the
 // editor's default view shows the sheet.
-inline constexpr double kSecondsSettledBeforeSleep = 1.0;
-inline constexpr double kSettledReach = 5e-4; // m
+inline constexpr double kSecondsStillBeforeSleep = 1.0;
+inline constexpr double kStillReach = 5e-4; // m
 // How far below its surface the tool grips the paper it presses onto the desk (m).
 inline constexpr double kToolReach = 0.001;
 // The bending solve runs every this many sub-steps, over their time together. Its step
