@@ -80,8 +80,7 @@ bool holdOnDesk(Vertices& V, const std::vector<Vec3>& stepStart,
     const RigidMotion moved = fitRigidMotion(V.m, contact, stepStart, V.x);
     const double speed =
         std::max(moved.shift.norm(), std::abs(moved.theta) * moved.radius) / scene.dt;
-    const double allowed =
-        slide < 0.0 ? speed : std::max(0.0, slide - kFrictionShare * slowing * scene.dt);
+    const double allowed = slide < 0.0 ? speed : std::max(0.0, slide - slowing * scene.dt);
     if (speed <= allowed) {
         slide = speed;
         return false;

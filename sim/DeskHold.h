@@ -23,7 +23,7 @@ namespace pf {
 // pull down a tilted desk). So, unless a tool, a pin or a hand holds the sheet, its
 // rigid slide across the desk (how the vertices the desk holds up shift and turn,
 // together, over the step) may only slow down from one step to the next, by at least
-// kFrictionShare of that, and once stopped it stays stopped. What it gains beyond that
+// that, and once stopped it stays stopped. What it gains beyond that
 // is undone, and only that: the shape of the sheet is never touched. While the sheet
 // as a whole rises or falls faster than friction's μk·g·dt (it lands, topples, or a
 // flap falls onto the rest), its lifted part may push the part on the desk, and the
@@ -33,10 +33,6 @@ struct DeskHoldScene {
     double dt = 0.0;
     double kineticFriction = 0.0;
 };
-
-// The share of kinetic friction's slowing the rule asks for at least: a sheet lying on
-// the desk rests all its weight on it, one part-lifted by its own folds less.
-inline constexpr double kFrictionShare = 0.5;
 
 // The caller has made sure that only the desk and gravity act on the sheet (no pins, no
 // hand, no tool within reach), and says which vertices the desk held up in this step
