@@ -88,7 +88,8 @@ bool holdOnDesk(Vertices& V, const std::vector<Vec3>& stepStart,
     // What the slide gained beyond friction's bound is undone, and the velocities lose
     // the same motion over the step. Not the rigid part of the velocities themselves:
     // they are the last sub-step's, and carry the sub-steps' cycle; taking that out
-    // instead (tried) set two folded cards walking at 11 and 82 mm/s.
+    // instead (tried, with an earlier form of this rule) set two folded cards walking
+    // at 11 and 82 mm/s.
     const double undone = 1.0 - allowed / speed;
     for (Index i = 0; i < V.size(); ++i) {
         Vec3 arm = stepStart[i] - moved.centre;

@@ -15,8 +15,8 @@ namespace pf {
 // it out and the projection puts it back. Every such swing slips vertices on the desk
 // past their static friction, one way and back, and the two halves of the swing do not
 // cancel. So a folded sheet whose shape no longer changed slid across the desk as a
-// rigid body, for ever, with nothing pushing it: 1-4 mm/s, and up to 34 mm/s where
-// the swing was as strong as kinetic friction itself.
+// rigid body, for ever, with nothing pushing it: 0.2-4 mm/s for office paper, up to
+// 17 mm/s for card.
 //
 // Real paper cannot do that. Its internal forces sum to nothing, gravity presses it
 // onto the desk, and the desk's friction slows whatever slides on it by μk·g (less any

@@ -155,9 +155,7 @@ void momentumCheck(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
     w.params.gravity = 0.0;
     w.params.breaking = false;
     Sheet& s = w.sheet;
-    Vec3 com = Vec3::Zero();
-    for (Index i = 0; i < s.verts.size(); ++i) com += s.verts.m[i] * s.verts.x[i];
-    com /= totalMass(s);
+    const Vec3 com = centreOfMass(s);
     const Vec3 v0(1.0, 0.5, 0.2), omega(0.0, 3.0, 1.0);
     for (Index i = 0; i < s.verts.size(); ++i) s.verts.v[i] = v0 + omega.cross(s.verts.x[i] - com);
     Simulation sim(w);

@@ -453,7 +453,7 @@ Sheet sheetFromCbor(const QCborMap& m) {
         }
         s.paper.quietSteps = static_cast<int>(integerAt(m, "quietSteps", w, 0, 1'000'000'000));
     }
-    // Absent in files from before it: the sheet settles from its first step on.
+    // Absent in files from before it: the sheet falls still from its first step on.
     if (m.contains(QLatin1String("stillFromCount"))) {
         s.paper.stillSteps = static_cast<int>(integerAt(m, "stillSteps", w, 0, 1'000'000'000));
         const qint64 nq = integerAt(m, "stillFromCount", w, 0, nv);

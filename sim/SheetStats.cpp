@@ -11,6 +11,12 @@ double totalMass(const Sheet& sheet) {
     return m;
 }
 
+Vec3 centreOfMass(const Sheet& sheet) {
+    Vec3 c = Vec3::Zero();
+    for (Index i = 0; i < sheet.verts.size(); ++i) c += sheet.verts.m[i] * sheet.verts.x[i];
+    return c / totalMass(sheet);
+}
+
 SheetStats computeStats(const Sheet& sheet) {
     SheetStats st;
     const auto& S = sheet.springs;

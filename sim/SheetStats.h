@@ -32,6 +32,7 @@ std::uint64_t stateHash(const Sheet& sheet);
 std::uint64_t editedStateHash(const Sheet& sheet);
 
 double totalMass(const Sheet& sheet);
+Vec3 centreOfMass(const Sheet& sheet);
 
 // Break events logged at `firstStep` or later and still in the sheet: how fast the sheet
 // is breaking (the editor shows it per second, so a user sees damage settle). Only an

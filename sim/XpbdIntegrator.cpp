@@ -918,8 +918,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     collideSphere(sp.center, sp.center, false);
     collideGround(false);
     const bool onlyTheDesk =
-        contacts_.ground && (!sp.active || toolTriangles_.empty()) && grips.empty() &&
-        std::none_of(V.pinned.begin(), V.pinned.end(), [](std::uint8_t p) { return p != 0; });
+        contacts_.ground && (!sp.active || toolTriangles_.empty()) && grips.empty() && pins == 0;
     if (onlyTheDesk)
         holdOnDesk(V, stepStart_, onDesk_, {g, params.dt, mat.groundKineticFriction},
                    paper.deskSlide);

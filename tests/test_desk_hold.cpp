@@ -4,6 +4,7 @@
 // the sheet is never touched. The bounds are worked out here from μ, g and dt.
 #include "DeskHold.h"
 #include "Scenes.h"
+#include "SheetStats.h"
 #include "Simulation.h"
 
 #include <QTest>
@@ -215,17 +216,7 @@ class TestDeskHold : public QObject {
         const double mu = w.params.material.groundKineticFriction;
         const double g = w.params.gravity;
         Simulation sim(std::move(w));
-        const auto centre = [&] {
-            const Vertices& V = sim.world().sheet.verts;
-            Vec3 c = Vec3::Zero();
-            double m = 0.0;
-            for (Index i = 0; i < V.size(); ++i) {
-                c += V.m[i] * V.x[i];
-                m += V.m[i];
-            }
-            return Vec3(c / m);
-        };
-        const Vec3 from = centre();
+        const Vec3 from = centreOfMass(sim.world().sheet);
         bool measured = false;
         for (int k = 0; k < 240 && !sim.asleep(); ++k) {
             QCOMPARE(sim.step(), StepStatus::Ok);
@@ -233,7 +224,7 @@ class TestDeskHold : public QObject {
         }
         QVERIFY(sim.asleep());
         QVERIFY(measured); // the rule watched the slide
-        const double slid = (centre() - from).x();
+        const double slid = (centreOfMass(sim.world().sheet) - from).x();
         const double coulomb = u * u / (2.0 * mu * g);
         qInfo("slid %.2f mm; u^2 / (2 mu_k g) = %.2f mm", 1e3 * slid, 1e3 * coulomb);
         QVERIFY(std::abs(slid / coulomb - 1.0) < 0.05);

@@ -46,17 +46,6 @@ void advanceSeconds(EditSession& s, double seconds) {
     while (s.world().time < end) QCOMPARE(s.advance(1), StepStatus::Ok);
 }
 
-// Where the sheet is, as a whole.
-Vec3 centreOfMass(const Vertices& V) {
-    Vec3 c = Vec3::Zero();
-    double m = 0.0;
-    for (Index i = 0; i < V.size(); ++i) {
-        c += V.m[i] * V.x[i];
-        m += V.m[i];
-    }
-    return c / m;
-}
-
 // Steps until the fold is let go; returns the seconds it took.
 double runUntilLetGo(EditSession& s) {
     const double start = s.world().time;
@@ -430,7 +419,7 @@ class TestFoldTool : public QObject {
         QVERIFY(runUntilLetGo(s) > 0.0);
         advanceSeconds(s, 2.0);
         const double stretch = computeStats(s.world().sheet).maxStretch;
-        const Vec3 lay = centreOfMass(s.world().sheet.verts);
+        const Vec3 lay = centreOfMass(s.world().sheet);
         advanceSeconds(s, 4.0);
         double left = 1e9, right = -1e9;
         for (const Vec3& x : s.world().sheet.verts.x) {
@@ -445,7 +434,7 @@ class TestFoldTool : public QObject {
         // And it lies still. It never slept, and crept across the desk at 0.6-4 mm/s for
         // as long as it was left: a cycle between the sub-steps and the projection that
         // the desk's friction turned into a walk (sim/DeskHold.h).
-        const double crept = (centreOfMass(s.world().sheet.verts) - lay).norm();
+        const double crept = (centreOfMass(s.world().sheet) - lay).norm();
         QVERIFY2(crept < 2e-4, qPrintable(QStringLiteral("crept %1 m in 4 s").arg(crept)));
         QVERIFY(s.simulation().asleep());
     }
@@ -476,9 +465,9 @@ class TestFoldTool : public QObject {
             QVERIFY(runUntilLetGo(s) > 0.0);
         }
         advanceSeconds(s, 1.0);
-        const Vec3 lay = centreOfMass(s.world().sheet.verts);
+        const Vec3 lay = centreOfMass(s.world().sheet);
         advanceSeconds(s, 4.0);
-        const double crept = (centreOfMass(s.world().sheet.verts) - lay).norm();
+        const double crept = (centreOfMass(s.world().sheet) - lay).norm();
         qInfo("1-5 s after the let-go it crept %.3g mm; asleep: %d", 1e3 * crept,
               int(s.simulation().asleep()));
         QVERIFY(crept < 2e-4);

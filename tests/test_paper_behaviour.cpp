@@ -71,23 +71,14 @@ struct PushResult {
 
 PushResult push(bool holdFarEdge) {
     Simulation sim(pushScene(holdFarEdge));
-    auto centre = [](const Sheet& s) {
-        Vec3 c = Vec3::Zero();
-        double m = 0.0;
-        for (Index i = 0; i < s.verts.size(); ++i) {
-            c += s.verts.m[i] * s.verts.x[i];
-            m += s.verts.m[i];
-        }
-        return Vec3(c / m);
-    };
-    const Vec3 before = centre(sim.world().sheet);
+    const Vec3 before = centreOfMass(sim.world().sheet);
     PushResult r;
     for (int k = 0; k < 240; ++k) {
         if (sim.step() != StepStatus::Ok) break;
         for (const Vec3& x : sim.world().sheet.verts.x) r.highest = std::max(r.highest, x.y());
         r.stretch = std::max(r.stretch, computeStats(sim.world().sheet).maxStretch);
     }
-    Vec3 moved = centre(sim.world().sheet) - before;
+    Vec3 moved = centreOfMass(sim.world().sheet) - before;
     moved.y() = 0.0;
     r.centreMove = moved.norm();
     return r;

@@ -51,6 +51,25 @@ void compareEvents(const std::vector<DamageEvent>& a, const std::vector<DamageEv
     }
 }
 
+// Saves the run as it is now and loads it back, the xpbd state unchanged, as a run of
+// its own.
+void keepResumable(const Simulation& whole, std::vector<Simulation>& resumed) {
+    const WorldLoad l = decodeWorld(encodeWorld(whole.world()));
+    QVERIFY2(l.world, qPrintable(l.error));
+    QVERIFY(l.world->sheet.paper == whole.world().sheet.paper);
+    resumed.emplace_back(*l.world);
+}
+
+// Steps each resumed run to where the whole run is: each ends there bit for bit, asleep
+// or not as it is.
+void expectEachToEndAsTheWhole(std::vector<Simulation>& resumed, const Simulation& whole) {
+    for (Simulation& r : resumed) {
+        while (r.world().stepCount < whole.world().stepCount) QCOMPARE(r.step(), StepStatus::Ok);
+        QCOMPARE(r.asleep(), whole.asleep());
+        QCOMPARE(encodeWorld(r.world()), encodeWorld(whole.world()));
+    }
+}
+
 QByteArray validFile() {
     static const QByteArray bytes = encodeWorld(crumpledWorld(300));
     return bytes;
@@ -378,10 +397,7 @@ class TestSheetFile : public QObject {
             if (!midStroke && k != 250) continue;
             sawGrips = sawGrips || !state.grips.empty();
             sawPlastic = sawPlastic || !state.plastic.empty();
-            const WorldLoad l = decodeWorld(encodeWorld(whole.world()));
-            QVERIFY2(l.world, qPrintable(l.error));
-            QVERIFY(l.world->sheet.paper == state);
-            resumed.emplace_back(*l.world);
+            keepResumable(whole, resumed);
         }
         QVERIFY2(sawGrips, "the tool held nothing at a save");
         QVERIFY2(sawPlastic, "nothing had yielded at a save");
@@ -396,12 +412,7 @@ class TestSheetFile : public QObject {
             const WorldLoad back = decodeWorld(encodeWorld(undone));
             QVERIFY2(back.world, qPrintable(back.error));
         }
-        for (Simulation& r : resumed) {
-            while (r.world().stepCount < whole.world().stepCount)
-                QCOMPARE(r.step(), StepStatus::Ok);
-            QCOMPARE(r.asleep(), whole.asleep());
-            QCOMPARE(encodeWorld(r.world()), encodeWorld(whole.world()));
-        }
+        expectEachToEndAsTheWhole(resumed, whole);
     }
 
     void xpbdResumesExactlyWhileItSettlesOnTheDesk() {
@@ -421,20 +432,12 @@ class TestSheetFile : public QObject {
             if (!sliding && !settling) continue;
             sawSlide = sawSlide || sliding;
             sawSettling = sawSettling || settling;
-            const WorldLoad l = decodeWorld(encodeWorld(whole.world()));
-            QVERIFY2(l.world, qPrintable(l.error));
-            QVERIFY(l.world->sheet.paper == state);
-            resumed.emplace_back(*l.world);
+            keepResumable(whole, resumed);
         }
         QVERIFY2(sawSlide, "the sheet never slid on the desk");
         QVERIFY2(sawSettling, "the sheet never settled");
         QVERIFY(whole.asleep());
-        for (Simulation& r : resumed) {
-            while (r.world().stepCount < whole.world().stepCount)
-                QCOMPARE(r.step(), StepStatus::Ok);
-            QCOMPARE(r.asleep(), whole.asleep());
-            QCOMPARE(encodeWorld(r.world()), encodeWorld(whole.world()));
-        }
+        expectEachToEndAsTheWhole(resumed, whole);
     }
 
     void filesFromBeforeTheStillStateLoad() {
