@@ -680,13 +680,19 @@ void EditSession::finishFold() {
     // applyScript has let the flap go (unless a step failed first); the groups have
     // nothing more to do.
     auto& groups = sim_.world().script.pins;
+    auto& pinned = sim_.world().sheet.verts.pinned;
+    bool held = false;
     for (std::size_t g = foldGroup_; g < groups.size(); ++g)
         for (Index i : groups[g].vertices)
-            if (i >= 0 && i < sim_.world().sheet.verts.size())
-                sim_.world().sheet.verts.pinned[i] = 0;
+            if (i >= 0 && i < sim_.world().sheet.verts.size()) {
+                held = held || pinned[i];
+                pinned[i] = 0;
+            }
     if (foldGroup_ < groups.size())
         groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(foldGroup_), groups.end());
-    sim_.world().sheet.paper.wake(); // what held the flap is gone
+    // What held the paper is gone. (Let go by the script, the step did this at its start,
+    // as a sheet saved mid-fold and resumed without the editor does.)
+    if (held) sim_.world().sheet.paper.wake();
     foldGroup_ = kNoFold;
     finished_ = endStroke(StrokeKind::Fold);
 }

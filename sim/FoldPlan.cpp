@@ -192,18 +192,21 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
         for (Index i : carry.vertices)
             lowestOnTheWay =
                 std::min(lowestOnTheWay, path.at(V.x[i], std::numbers::pi * k / kDeskChecks).y());
+    // The rest of the sheet is held where it lies, as the other hand holds it while one
+    // folds: left free, the carry dragged it round, and a second fold across the first
+    // ended with its layers turned up to 20 degrees apart (docs/model.md, "The Fold tool").
+    PinGroup rest;
+    for (Index i = 0; i < V.size(); ++i)
+        if (holdable(i, -1.0)) rest.vertices.push_back(i);
     // A flap that would pass through the desk (a mountain fold of paper lying face up)
     // is folded as a hand folds it under: the sheet is lifted off the desk first, by as
     // much as the flap needs, and put down again once folded.
     double lift = 0.0;
-    PinGroup rest;
     if (world.groundEnabled && lowestOnTheWay < world.groundHeight - kDeskTolerance) {
         lift = world.groundHeight + kDeskTolerance - lowestOnTheWay;
-        for (Index i = 0; i < V.size(); ++i) {
-            // Pins hold the paper down: it cannot be lifted.
+        // Pins hold the paper down: it cannot be lifted.
+        for (Index i = 0; i < V.size(); ++i)
             if (V.pinned[i]) return refuse(FoldRefusal::DeskInTheWay);
-            if (holdable(i, -1.0)) rest.vertices.push_back(i);
-        }
         if (rest.vertices.empty()) return refuse(FoldRefusal::DeskInTheWay);
     }
 
@@ -267,6 +270,8 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
         motions.push_back(move(rest, down, t));
         t = motions.back().until;
     }
+    // Not lifted, the rest is held still throughout (lifted, it is held by its lift).
+    if (lift == 0.0 && !rest.vertices.empty()) motions.push_back(rest);
     for (PinGroup& g : motions) g.release = t;
     plan.release = t;
     return plan;

@@ -13,7 +13,7 @@ using namespace pf;
 namespace {
 
 struct FoldRun {
-    double whenLetGo = 0.0, after2s = 0.0, after5s = 0.0, after20s = 0.0;
+    double whenLetGo = 0.0, after2s = 0.0, after10s = 0.0, after20s = 0.0;
     int breaks = 0;
     // Mean height of the folded-over half above that of the half it lies on, 20 s after
     // release (the halves are told apart in material coordinates).
@@ -57,8 +57,8 @@ FoldRun runFold(bool damage, const std::string& integrator = "jacobi") {
     r.whenLetGo = foldAngle(sim.world().sheet, length);
     runUntil(release + 2.0);
     r.after2s = foldAngle(sim.world().sheet, length);
-    runUntil(release + 5.0);
-    r.after5s = foldAngle(sim.world().sheet, length);
+    runUntil(release + 10.0);
+    r.after10s = foldAngle(sim.world().sheet, length);
     runUntil(release + 20.0);
     r.after20s = foldAngle(sim.world().sheet, length);
     r.breaks = computeStats(sim.world().sheet).breaks;
@@ -78,19 +78,21 @@ class TestCreases : public QObject {
         if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
         const FoldRun paper = runFold(true);
         const FoldRun elastic = runFold(false);
-        qInfo("fold angle when let go / 2 / 5 / 20 s later: %.1f / %.1f / %.1f / %.1f degrees "
+        qInfo("fold angle when let go / 2 / 10 / 20 s later: %.1f / %.1f / %.1f / %.1f degrees "
               "with breaks and hinges, %.1f / %.1f / %.1f / %.1f without",
-              paper.whenLetGo, paper.after2s, paper.after5s, paper.after20s, elastic.whenLetGo,
-              elastic.after2s, elastic.after5s, elastic.after20s);
+              paper.whenLetGo, paper.after2s, paper.after10s, paper.after20s, elastic.whenLetGo,
+              elastic.after2s, elastic.after10s, elastic.after20s);
         // Both were folded flat when let go.
         QVERIFY(paper.whenLetGo > 150.0);
         QVERIFY(elastic.whenLetGo > 150.0);
         // The creased sheet stays folded...
         QVERIFY(paper.after2s > 90.0);
-        QVERIFY(paper.after5s > 90.0);
+        QVERIFY(paper.after10s > 90.0);
         QVERIFY(paper.after20s > 90.0);
-        // ... and the one that cannot crease springs open, all the way to flat.
-        QVERIFY(elastic.after5s < 45.0);
+        // ... and the one that cannot crease springs open, all the way to flat. It snaps
+        // open 3-6 s after the let-go (the paper's soft springs: a loop that gives way at
+        // once); with the rest of the sheet held while the fold was pressed, at 5.3 s.
+        QVERIFY(elastic.after10s < 45.0);
         QVERIFY(elastic.after20s < 10.0);
     }
 
@@ -101,22 +103,22 @@ class TestCreases : public QObject {
         if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
         const FoldRun paper = runFold(true, "xpbd");
         const FoldRun elastic = runFold(false, "xpbd");
-        qInfo("xpbd: fold angle when let go / 2 / 5 / 20 s later: %.1f / %.1f / %.1f / %.1f "
+        qInfo("xpbd: fold angle when let go / 2 / 10 / 20 s later: %.1f / %.1f / %.1f / %.1f "
               "degrees, %d breaks, the folded half %.2f mm above the other; without breaks "
               "and hinges %.1f / %.1f / %.1f / %.1f degrees, %.2f mm",
-              paper.whenLetGo, paper.after2s, paper.after5s, paper.after20s, paper.breaks,
-              1000.0 * paper.flapAbove, elastic.whenLetGo, elastic.after2s, elastic.after5s,
+              paper.whenLetGo, paper.after2s, paper.after10s, paper.after20s, paper.breaks,
+              1000.0 * paper.flapAbove, elastic.whenLetGo, elastic.after2s, elastic.after10s,
               elastic.after20s, 1000.0 * elastic.flapAbove);
         QVERIFY(paper.whenLetGo > 150.0);
         QVERIFY(paper.after2s > 90.0);
-        QVERIFY(paper.after5s > 90.0);
+        QVERIFY(paper.after10s > 90.0);
         QVERIFY(paper.after20s > 90.0);
         QVERIFY(paper.breaks > 0);
-        // Two layers of paper apart, not one through the other.
+        // Two layers of paper apart, not one through the other. (Without hinges the
+        // uncreased loop holds the folded half up as well, 0.63 mm: it sank through the
+        // other, the model having no self-contact, only while the rest of the sheet was
+        // left free to slide as the fold was pressed, and the loop flattened.)
         QVERIFY(paper.flapAbove > 0.5e-3);
-        // Without hinges nothing keeps the layers apart (the model has no self-contact):
-        // the folded half sinks through the other.
-        QVERIFY(elastic.flapAbove < paper.flapAbove);
     }
 };
 

@@ -267,14 +267,24 @@ class TestTopology : public QObject {
             QVERIFY(std::abs(maxX - minX - 0.15) < 1e-12 && std::abs(maxZ - minZ - 0.20) < 1e-12);
             if (name == "fold") {
                 // The near half is carried over the middle: every vertex beyond the band
-                // where the crease forms, and nothing else.
-                QVERIFY(!w.script.pins.empty());
-                Index flap = 0;
-                for (const Vec2& X : s.verts.X) flap += X.y() < -kFoldBand;
-                for (const PinGroup& g : w.script.pins) {
-                    QCOMPARE(static_cast<Index>(g.vertices.size()), flap);
-                    for (Index i : g.vertices) QVERIFY(s.verts.X[i].y() < -kFoldBand);
+                // where the crease forms, and nothing else; the last group holds the far
+                // half, beyond the band on the other side, where it lies.
+                QCOMPARE(w.script.pins.size(), std::size_t(kCarrySegments + 1));
+                Index flap = 0, rest = 0;
+                for (const Vec2& X : s.verts.X) {
+                    flap += X.y() < -kFoldBand;
+                    rest += X.y() > kFoldBand;
                 }
+                for (std::size_t g = 0; g < kCarrySegments; ++g) {
+                    const PinGroup& carry = w.script.pins[g];
+                    QCOMPARE(static_cast<Index>(carry.vertices.size()), flap);
+                    for (Index i : carry.vertices) QVERIFY(s.verts.X[i].y() < -kFoldBand);
+                }
+                const PinGroup& held = w.script.pins.back();
+                QCOMPARE(static_cast<Index>(held.vertices.size()), rest);
+                for (Index i : held.vertices) QVERIFY(s.verts.X[i].y() > kFoldBand);
+                QCOMPARE(held.turnRate, 0.0);
+                QVERIFY(held.velocity.isZero());
                 continue;
             }
             for (const PinGroup& g : w.script.pins)
