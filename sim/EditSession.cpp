@@ -121,6 +121,8 @@ void EditSession::replaceWorld(const World& world) {
     setSettle(Settle::None);
     finished_.reset();    // an undo step of the old sheet's
     foldGroup_ = kNoFold; // a fold of the old sheet's
+    foldWatch_.cancel();
+    foldTurnedBack_.reset();
     const SphereTool tool = sim_.world().sphere;
     const int threads = sim_.threads();
     sim_ = Simulation(world);
@@ -335,6 +337,8 @@ EditSession::MeshSize EditSession::meshSize() const {
 }
 
 void EditSession::beginStroke() {
+    foldWatch_.cancel(); // the next edit came first
+    foldTurnedBack_.reset();
     keepSettlingWithLastStroke();
     settledSince_ = kNone;
     pressedFrozen_ = settle_ == Settle::Frozen;
@@ -466,6 +470,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     c.stroke = stroke;
     record(std::move(c));
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size()) || folding()) return std::nullopt;
+    foldWatch_.cancel(); // recovery renumbers vertices
     const Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
     if (st.worldAfter) { // a Reset
         if (sheet_ != st.sheetAfter || pressed_) return std::nullopt;
@@ -504,6 +509,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
     c.stroke = stroke;
     record(std::move(c));
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size()) || folding()) return std::nullopt;
+    foldWatch_.cancel(); // recovery renumbers vertices
     if (Stroke& reset = strokes_[static_cast<std::size_t>(stroke)]; reset.worldAfter) {
         if (sheet_ != reset.sheetBefore || pressed_) return std::nullopt;
         // The sheet moved on since the undo: an undo of this redo gives back that.
@@ -577,10 +583,11 @@ StepStatus EditSession::advance(int steps) {
         if (status != StepStatus::Ok) {
             record(EditCommand::of(EditCommand::Kind::Diverged));
             // The carry is what blew up, maybe: let the flap go rather than carry it on.
-            if (folding()) finishFold();
+            if (folding()) finishFold(false);
             return status;
         }
-        if (folding() && w.time >= foldRelease_) finishFold();
+        if (folding() && w.time >= foldRelease_) finishFold(true);
+        if (const auto turned = foldWatch_.check(w.sheet, w.time)) foldTurnedBack_ = turned;
     }
     return StepStatus::Ok;
 }
@@ -635,6 +642,10 @@ void EditSession::freeze() {
     setSettle(Settle::Frozen);
 }
 
+std::optional<double> EditSession::takeFoldTurnedBack() {
+    return std::exchange(foldTurnedBack_, std::nullopt);
+}
+
 std::optional<EditSession::StrokeEnd> EditSession::takeFinished() {
     return std::exchange(finished_, std::nullopt);
 }
@@ -676,10 +687,18 @@ void EditSession::adoptFoldUnderWay() {
     if (folding()) beginStroke();
 }
 
-void EditSession::finishFold() {
+void EditSession::finishFold(bool letGo) {
     // applyScript has let the flap go (unless a step failed first); the groups have
     // nothing more to do.
     auto& groups = sim_.world().script.pins;
+    if (letGo)
+        for (std::size_t g = foldGroup_; g < groups.size(); ++g)
+            if (groups[g].turnRate != 0.0) { // the carry: the flap
+                foldWatch_.start(sim_.world().sheet, groups[g].vertices,
+                                 groups[g].turnRate > 0.0 ? groups[g].axis : Vec3(-groups[g].axis),
+                                 sim_.world().time);
+                break;
+            }
     auto& pinned = sim_.world().sheet.verts.pinned;
     bool held = false;
     for (std::size_t g = foldGroup_; g < groups.size(); ++g)

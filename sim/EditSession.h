@@ -1,6 +1,7 @@
 #pragma once
 
 #include "FoldPlan.h"
+#include "FoldWatch.h"
 #include "Simulation.h"
 
 #include <functional>
@@ -136,6 +137,11 @@ class EditSession {
     // Settle do nothing.
     FoldRefusal fold(const FoldRequest& request);
     bool folding() const { return foldGroup_ != kNoFold; }
+    // A second after a fold was let go (FoldWatch::kSeconds), how far its flap had turned
+    // back, in degrees (negative: further closed), once; nothing if another edit came
+    // first. A flap that turned back more than kSprangBack did not keep its crease.
+    std::optional<double> takeFoldTurnedBack();
+    static constexpr double kSprangBack = 45.0; // degrees
 
     // Undo recovers (§4.2), newest first, every break and hinge since the stroke began —
     // its own and those the sheet made settling after it — and, when all came back, gives
@@ -281,7 +287,9 @@ class EditSession {
     std::size_t foldGroup_ = kNoFold;
     double foldRelease_ = 0.0;
     // Ends the fold under way once its flap is let go (or a step failed): an undo step.
-    void finishFold();
+    void finishFold(bool letGo);
+    FoldWatch foldWatch_;
+    std::optional<double> foldTurnedBack_;
     // Takes a sheet's pin groups still to be let go as the fold under way.
     void adoptFoldUnderWay();
     // Another edit must wait: a push or a grab is held, or a fold is under way.

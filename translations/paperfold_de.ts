@@ -605,8 +605,12 @@
         <translation>Nicht jetzt: Eine Faltung läuft noch.</translation>
     </message>
     <message>
-        <source>Folded: the crease keeps it. Edit ▸ Undo unfolds the paper.</source>
-        <translation>Gefaltet: Der Knick hält die Faltung. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
+        <source>Folded. Edit ▸ Undo unfolds the paper.</source>
+        <translation>Gefaltet. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
+    </message>
+    <message>
+        <source>The fold opened %1° again after it was let go: its crease did not hold the flap. Edit ▸ Undo unfolds the paper.</source>
+        <translation>Die Faltung hat sich nach dem Loslassen wieder um %1° geöffnet: Ihr Knick hat die Lasche nicht gehalten. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
     </message>
 </context>
 <context>

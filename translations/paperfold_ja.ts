@@ -600,8 +600,12 @@
         <translation>今はできません：折りの途中です。</translation>
     </message>
     <message>
-        <source>Folded: the crease keeps it. Edit ▸ Undo unfolds the paper.</source>
-        <translation>折りました：折り目が折りを保ちます。編集 ▸ 元に戻す で紙を開きます。</translation>
+        <source>Folded. Edit ▸ Undo unfolds the paper.</source>
+        <translation>折りました。編集 ▸ 元に戻す で紙を開きます。</translation>
+    </message>
+    <message>
+        <source>The fold opened %1° again after it was let go: its crease did not hold the flap. Edit ▸ Undo unfolds the paper.</source>
+        <translation>離した後、折りが %1° 開きました：折り目がフラップを保てませんでした。編集 ▸ 元に戻す で紙を開きます。</translation>
     </message>
 </context>
 <context>

@@ -600,8 +600,12 @@
         <translation>지금은 할 수 없습니다: 접는 중입니다.</translation>
     </message>
     <message>
-        <source>Folded: the crease keeps it. Edit ▸ Undo unfolds the paper.</source>
-        <translation>접었습니다: 접힌 자국이 접힘을 유지합니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
+        <source>Folded. Edit ▸ Undo unfolds the paper.</source>
+        <translation>접었습니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
+    </message>
+    <message>
+        <source>The fold opened %1° again after it was let go: its crease did not hold the flap. Edit ▸ Undo unfolds the paper.</source>
+        <translation>놓은 뒤 접힘이 다시 %1° 열렸습니다: 접힌 자국이 날개를 붙잡지 못했습니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
     </message>
 </context>
 <context>

@@ -142,9 +142,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                 if (kind == static_cast<int>(EditSession::StrokeKind::Reset)) firstSnapshot_ = true;
                 // The fold's "Folding…" would otherwise stand for seconds after it ended.
                 if (kind == static_cast<int>(EditSession::StrokeKind::Fold))
-                    statusBar()->showMessage(
-                        tr("Folded: the crease keeps it. Edit ▸ Undo unfolds the paper."), 5000);
+                    statusBar()->showMessage(tr("Folded. Edit ▸ Undo unfolds the paper."), 5000);
             });
+    // Said once the paper has had its second (EditSession::takeFoldTurnedBack): a third
+    // fold along the diagonal of a sheet folded twice sprang back 111° while the status
+    // bar said "the crease keeps it".
+    connect(sim_.get(), &SimulationThread::foldSprangBack, this, [this](double degrees) {
+        statusBar()->showMessage(
+            tr("The fold opened %1° again after it was let go: its crease did not hold the "
+               "flap. Edit ▸ Undo unfolds the paper.")
+                .arg(degrees, 0, 'f', 0),
+            10000);
+    });
     connect(sim_.get(), &SimulationThread::settled, this, [this](int stroke) {
         undo_->push(new StrokeCommand(sim_.get(), stroke, 0,
                                       static_cast<int>(EditSession::StrokeKind::Settle)));

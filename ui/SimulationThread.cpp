@@ -47,6 +47,7 @@ void SimulationThread::forwardWorkerSignals() {
     forward(&SimulationWorker::strokeRedone, &SimulationThread::strokeRedone);
     forward(&SimulationWorker::settled, &SimulationThread::settled);
     forward(&SimulationWorker::foldAnswered, &SimulationThread::foldAnswered);
+    forward(&SimulationWorker::foldSprangBack, &SimulationThread::foldSprangBack);
     forward(&SimulationWorker::worldReplaced, &SimulationThread::worldReplaced);
     forward(&SimulationWorker::diverged, &SimulationThread::diverged);
 }

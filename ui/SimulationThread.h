@@ -79,6 +79,9 @@ class SimulationThread : public QObject {
     void settled(int stroke);
     // `refusal` is a FoldRefusal: None when the fold began.
     void foldAnswered(int refusal);
+    // A second after a fold was let go its flap had turned back this far, past
+    // EditSession::kSprangBack: the crease did not keep it.
+    void foldSprangBack(double degrees);
     // A replaceWorld was applied: the old World is gone and a snapshot of the new one
     // was published (its snapshotReady comes first).
     void worldReplaced();

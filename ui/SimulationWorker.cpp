@@ -122,6 +122,9 @@ void SimulationWorker::advance(int steps) {
         else
             announce(finished); // a fold that was let go
     }
+    if (const auto turned = session_.takeFoldTurnedBack();
+        turned && *turned > EditSession::kSprangBack)
+        emit foldSprangBack(*turned);
     if (status == StepStatus::Ok) return;
     playing_ = false;
     emit diverged(session_.world().stepCount);

@@ -57,6 +57,7 @@ class SimulationWorker : public QObject {
     void strokeRedone(int stroke, int reapplied);
     void settled(int stroke);       // a Settle froze the sheet: an undo step
     void foldAnswered(int refusal); // a FoldRefusal
+    void foldSprangBack(double degrees);
     void worldReplaced();
     void diverged(qint64 step);
 
