@@ -1523,7 +1523,13 @@ class TestEditor : public QObject {
         settledStatus(*window);
         QTRY_VERIFY(!window->action("undo")->isEnabled());
         const double halfWay = foldAngle(worldOf(*window)->sheet, 0.297);
-        for (int s = 0; s < 600 && recorded.count() == 0; ++s) window->simulation()->stepOnce();
+        // Pressed flat, nothing moves, and the sheet may sleep; but it is being folded,
+        // not lying at rest (a user read "· at rest" with the flap still held).
+        for (int s = 0; s < 300; ++s) window->simulation()->stepOnce();
+        const SimulationStatus pressed = settledStatus(*window);
+        QVERIFY(pressed.folding);
+        QVERIFY(!pressed.resting);
+        for (int s = 0; s < 300 && recorded.count() == 0; ++s) window->simulation()->stepOnce();
         // Every queued step applied before the wait: under AddressSanitizer, beside other
         // suites, the 600 steps outlasted the 5 s wait once.
         window->simulation()->sync();

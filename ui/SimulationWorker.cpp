@@ -168,7 +168,8 @@ void SimulationWorker::publish(double stepSeconds) {
     st.threads = session_.simulation().threads();
     st.playing = playing_;
     st.folding = session_.folding();
-    st.resting = session_.simulation().asleep();
+    // Held pressed flat, a fold's sheet may sleep; it is being folded, not lying at rest.
+    st.resting = !st.folding && session_.simulation().asleep();
     st.sheetHash = editedStateHash(w.sheet);
     emit published(std::make_shared<const SheetSnapshot>(makeSnapshot(session_.simulation())), st);
 }
