@@ -279,11 +279,17 @@ std::optional<EditSession::StrokeEnd> EditSession::pin(const Vec3& point, double
         for (Index i = 0; i < V.size(); ++i)
             if (!V.pinned[i] && (V.x[i] - point).squaredNorm() <= radius * radius)
                 changed.push_back(i);
+    } else if (const Stroke* set = pinThatHeld(nearest)) {
+        // The pin the user set there, as one click set it: three clicks side by side made
+        // one patch of pins, and a click on one freed all 14 of its vertices.
+        for (Index i : set->pinChanged)
+            if (i < V.size() && V.pinned[i]) changed.push_back(i);
     } else {
-        // The whole pinned patch the click landed on: pinned vertices joined by springs,
-        // up to kPinPatchReach radii from the click. The paper round a pin moves, so a
-        // second click on the pin meets it a little off where the first did, and must
-        // still free all of it; a pin further off is another pin.
+        // A pin this session did not set (opened with the sheet): the whole pinned patch
+        // the click landed on, pinned vertices joined by springs, up to kPinPatchReach
+        // radii from the click. The paper round a pin moves, so a second click on the
+        // pin meets it a little off where the first did, and must still free all of it;
+        // a pin further off is another pin.
         const Springs& S = sim_.world().sheet.springs;
         const double reach2 = kPinPatchReach * kPinPatchReach * radius * radius;
         auto inPatch = [&](Index i) {
@@ -314,6 +320,17 @@ std::optional<EditSession::StrokeEnd> EditSession::pin(const Vec3& point, double
     StrokeEnd end = keepStroke(std::move(stroke), to ? StrokeKind::Pin : StrokeKind::Unpin);
     end.events = static_cast<int>(strokes_.back().pinChanged.size());
     return end;
+}
+
+const EditSession::Stroke* EditSession::pinThatHeld(Index vertex) const {
+    for (auto st = strokes_.rbegin(); st != strokes_.rend(); ++st) {
+        if (!st->applied || st->pinChanged.empty()) continue;
+        if (std::find(st->pinChanged.begin(), st->pinChanged.end(), vertex) == st->pinChanged.end())
+            continue;
+        // The newest step that set or freed this vertex: a pin only if it set it.
+        return st->pinnedTo ? &*st : nullptr;
+    }
+    return nullptr;
 }
 
 EditSession::SheetLook EditSession::look() const {

@@ -113,8 +113,9 @@ class EditSession {
     Index grabbedVertex() const { return grabbed_; }
     // Pin: toggles the vertices around `point` — when the click is on free paper (see
     // kOnPinShare), the free vertices within `radius` of the point are pinned; when it is
-    // on a pin, the pin's patch (pinned vertices joined by springs, within
-    // kPinPatchReach radii of the point) is freed. Pinned vertices stand still and are saved
+    // on a pin, that pin is freed: the vertices the click that set it pinned, or, for a
+    // pin this session did not set, the pin's patch (pinned vertices joined by springs,
+    // within kPinPatchReach radii of the point). Pinned vertices stand still and are saved
     // with the sheet. An undo step; nothing when no vertex is that close.
     std::optional<StrokeEnd> pin(const Vec3& point, double radius);
     static constexpr double kPinPatchReach = 3.0;
@@ -250,6 +251,8 @@ class EditSession {
     void pullGrabbed();
     // Adds an undo step; the oldest steps beyond kStrokesWithLook drop their looks.
     StrokeEnd keepStroke(Stroke stroke, StrokeKind kind);
+    // The done Pin step that last set `vertex` pinned, if no later done step freed it.
+    const Stroke* pinThatHeld(Index vertex) const;
     void beginLog();
     void record(EditCommand command);
     // Puts `world` in place as sheet `sheet`, keeping the clock and the tool; a grab is

@@ -899,6 +899,13 @@ class TestEditSession : public QObject {
         QVERIFY(byPin);
         QCOMPARE(byPin->kind, EditSession::StrokeKind::Unpin);
         QVERIFY(!V.pinned[left]);
+        // That pin alone: the one the click between them set, and the right one, stay.
+        QVERIFY(V.pinned[middle] && V.pinned[right]);
+        const auto onMiddle = session.pin(V.x[middle], 1e-4);
+        QVERIFY(onMiddle);
+        QCOMPARE(onMiddle->kind, EditSession::StrokeKind::Unpin);
+        QCOMPARE(onMiddle->events, click->events);
+        QVERIFY(!V.pinned[middle] && V.pinned[right]);
         // Off the pin by more than a quarter of the radius, with free paper farther than
         // half as far again: still the pin's (paper round a pin it hangs from is steep).
         QVERIFY(session.pin(V.x[left], 1e-4));
@@ -913,6 +920,56 @@ class TestEditSession : public QObject {
         QVERIFY(nearFree);
         QCOMPARE(nearFree->kind, EditSession::StrokeKind::Pin);
         QVERIFY(V.pinned[left] && V.pinned[middle]);
+    }
+
+    // A click on a pin frees that pin, as the click that set it pinned it: a helper
+    // pinned three patches side by side, and one click on a pin freed all 14 vertices,
+    // up to 37 mm away.
+    void aClickOnAPinFreesThatPinOnly() {
+        EditSession session(test::machineryScene("press"));
+        const auto& V = session.world().sheet.verts;
+        const double radius = 0.015;
+        std::vector<std::vector<Index>> set;
+        for (int k = -1; k <= 1; ++k) {
+            const Vec3 at(0.025 * k, 0.0, 0.0);
+            const auto click = session.pin(at, radius);
+            QVERIFY(click);
+            QCOMPARE(click->kind, EditSession::StrokeKind::Pin);
+            set.emplace_back();
+            for (Index i = 0; i < V.size(); ++i)
+                if (V.pinned[i] && (V.x[i] - at).norm() <= radius &&
+                    std::none_of(set.begin(), set.end() - 1, [&](const std::vector<Index>& p) {
+                        return std::find(p.begin(), p.end(), i) != p.end();
+                    }))
+                    set.back().push_back(i);
+            QCOMPARE(int(set.back().size()), click->events);
+        }
+        const auto pinnedCount = [&] { return std::count(V.pinned.begin(), V.pinned.end(), 1); };
+        const auto all = pinnedCount();
+        // The three are one patch of pinned paper joined by springs.
+        QVERIFY(all > std::ptrdiff_t(set[1].size()) + 2);
+        const auto freed = session.pin(V.x[set[1].front()], radius);
+        QVERIFY(freed);
+        QCOMPARE(freed->kind, EditSession::StrokeKind::Unpin);
+        QCOMPARE(freed->events, int(set[1].size()));
+        for (Index i : set[1]) QVERIFY(!V.pinned[i]);
+        for (Index i : set[0]) QVERIFY(V.pinned[i]);
+        for (Index i : set[2]) QVERIFY(V.pinned[i]);
+        // Undone, the pin is back, and a click frees it again.
+        QVERIFY(session.undoStroke(freed->stroke));
+        QCOMPARE(pinnedCount(), all);
+        const auto again = session.pin(V.x[set[1].back()], radius);
+        QVERIFY(again);
+        QCOMPARE(again->events, int(set[1].size()));
+        // A sheet opened with pins on it has no clicks to go by: a click frees the patch
+        // of pins round it, all three.
+        QVERIFY(session.undoStroke(again->stroke));
+        const auto opened = decodeWorld(encodeWorld(session.world()));
+        QVERIFY(opened.world);
+        EditSession reopened(*opened.world);
+        const auto patch = reopened.pin(V.x[set[1].front()], radius);
+        QVERIFY(patch);
+        QCOMPARE(patch->events, int(all));
     }
 
     void aSessionWithGrabsAndPinsReplays() {
