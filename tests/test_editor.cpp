@@ -21,6 +21,7 @@
 #include "ViewportInput.h"
 #include "WorkerPool.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDateTime>
@@ -1052,6 +1053,27 @@ class TestEditor : public QObject {
         const QImage picture(nextFile);
         QCOMPARE(picture.size(), QSize(320, 200));
         QCOMPARE(bluish(picture), 0);
+    }
+
+    // The push tool's sphere comes back under a cursor that has not moved once a modal
+    // dialog closes: a user saw it missing after Help ▸ About until the mouse moved.
+    void theToolComesBackAfterADialog() {
+        auto* view = window->viewport();
+        moveMouse(view, view->rect().center(), Qt::NoButton);
+        QTRY_VERIFY(view->snapshot() && view->snapshot()->sphere.hovering);
+        bool closed = false;
+        QTimer::singleShot(300, [&] {
+            if (QWidget* dialog = QApplication::activeModalWidget()) {
+                // The dialog took the cursor from the view.
+                QCoreApplication::sendEvent(view, std::make_unique<QEvent>(QEvent::Leave).get());
+                dialog->close();
+                closed = true;
+            }
+        });
+        window->action("about")->trigger();
+        QVERIFY(closed);
+        QTRY_VERIFY_WITH_TIMEOUT(view->snapshot() && view->snapshot()->sphere.hovering,
+                                 kSignalWaitMs);
     }
 
     // Orbited down past the horizon the eye went under the desk, which hid the paper while

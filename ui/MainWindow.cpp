@@ -582,6 +582,9 @@ void MainWindow::nameHistoryStart() {
 
 void MainWindow::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) retranslate();
+    // Back from a modal dialog, the view may get no Enter until the mouse moves.
+    if (event->type() == QEvent::ActivationChange && isActiveWindow() && input_)
+        input_->showToolUnderCursor();
     QMainWindow::changeEvent(event);
 }
 

@@ -4,6 +4,7 @@
 #include "SimulationThread.h"
 #include "Viewport.h"
 
+#include <QCursor>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QWheelEvent>
@@ -159,6 +160,12 @@ void ViewportInput::useFold(const QPoint& pixel, bool held, bool press) {
     emit foldDrawn(foldFrom_, ray.origin + t * ray.direction);
 }
 
+void ViewportInput::showToolUnderCursor() {
+    if (tool_ != Tool::Push || toolShown_ || !viewport_->isVisible()) return;
+    const QPoint at = viewport_->mapFromGlobal(QCursor::pos());
+    if (viewport_->rect().contains(at)) pointTool(at, false);
+}
+
 void ViewportInput::hideTool() {
     toolPressed_ = false;
     if (!toolShown_) return;
@@ -267,6 +274,9 @@ bool ViewportInput::eventFilter(QObject* watched, QEvent* event) {
     }
     case QEvent::Leave:
         hideTool();
+        return false;
+    case QEvent::Enter:
+        showToolUnderCursor();
         return false;
     case QEvent::KeyPress:
         if (!orbitPanOrZoom(event)) return false;

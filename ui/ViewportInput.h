@@ -29,6 +29,10 @@ class ViewportInput : public QObject {
 
     enum class Tool { Push, Grab, Pin, Fold };
     Tool tool() const { return tool_; }
+    // The push tool's sphere under the cursor again, where the cursor lies over the view
+    // without having moved: after a modal dialog the sphere stayed hidden (the view saw
+    // the cursor leave) until the mouse moved.
+    void showToolUnderCursor();
     void setTool(Tool tool);
     // The sheet let go of a held grab (an undo or redo): the hand holds nothing until the
     // next press.
