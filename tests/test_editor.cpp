@@ -578,6 +578,8 @@ class TestEditor : public QObject {
         QCOMPARE(name(Kind::Push, 1), QStringLiteral("Push (1 break or fold)"));
         QCOMPARE(name(Kind::Grab, 0), QStringLiteral("Grab (0 breaks or folds)"));
         QCOMPARE(name(Kind::Fold, 12), QStringLiteral("Fold (12 breaks or folds)"));
+        // A fold that broke nothing is a fold, not "0 breaks or folds".
+        QCOMPARE(name(Kind::Fold, 0), QStringLiteral("Fold"));
         // The status bar's counts too.
         QStatusBar bar;
         StatusReadout readout(&bar);
@@ -603,6 +605,7 @@ class TestEditor : public QObject {
         QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Pin 1 vertex"));
         QVERIFY(installLanguage(QStringLiteral("de")));
         QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Anheften (1 Knoten)"));
+        QCOMPARE(name(Kind::Fold, 0), QStringLiteral("Falten"));
         QVERIFY(installLanguage(QStringLiteral("en")));
     }
 

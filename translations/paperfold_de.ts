@@ -74,6 +74,10 @@
         <translation>Schwerkraft außerhalb des Filters</translation>
     </message>
     <message>
+        <source>Fold</source>
+        <translation>Falten</translation>
+    </message>
+    <message>
         <source>Settle</source>
         <translation>Beruhigen</translation>
     </message>

@@ -73,6 +73,10 @@
         <translation>フィルター外の重力</translation>
     </message>
     <message>
+        <source>Fold</source>
+        <translation>折る</translation>
+    </message>
+    <message>
         <source>Settle</source>
         <translation>静止</translation>
     </message>

@@ -73,6 +73,10 @@
         <translation>필터 밖의 중력</translation>
     </message>
     <message>
+        <source>Fold</source>
+        <translation>접기</translation>
+    </message>
+    <message>
         <source>Settle</source>
         <translation>안정</translation>
     </message>

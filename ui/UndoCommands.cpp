@@ -62,8 +62,13 @@ void StrokeCommand::retranslate() {
         setText(QCoreApplication::translate("UndoCommands", "Reset"));
         break;
     case EditSession::StrokeKind::Fold:
-        setText(QCoreApplication::translate("UndoCommands", "Fold (%n break(s) or fold(s))",
-                                            nullptr, events));
+        // A fold that kept its crease without a break or a hinge (card bends plastically)
+        // read "Fold (0 breaks or folds)".
+        if (events == 0)
+            setText(QCoreApplication::translate("UndoCommands", "Fold"));
+        else
+            setText(QCoreApplication::translate("UndoCommands", "Fold (%n break(s) or fold(s))",
+                                                nullptr, events));
         break;
     }
 }
