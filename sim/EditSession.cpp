@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <utility>
 
 namespace pf {
@@ -121,8 +122,7 @@ void EditSession::replaceWorld(const World& world) {
     setSettle(Settle::None);
     finished_.reset();    // an undo step of the old sheet's
     foldGroup_ = kNoFold; // a fold of the old sheet's
-    foldWatch_.cancel();
-    foldTurnedBack_.reset();
+    forgetFoldWatch();
     const SphereTool tool = sim_.world().sphere;
     const int threads = sim_.threads();
     sim_ = Simulation(world);
@@ -324,7 +324,8 @@ std::optional<EditSession::StrokeEnd> EditSession::pin(const Vec3& point, double
 
 const EditSession::Stroke* EditSession::pinThatHeld(Index vertex) const {
     for (auto st = strokes_.rbegin(); st != strokes_.rend(); ++st) {
-        if (!st->applied || st->pinChanged.empty()) continue;
+        // A step on another sheet (before a Reset) numbered other vertices.
+        if (!st->applied || st->pinChanged.empty() || st->sheet != sheet_) continue;
         if (std::find(st->pinChanged.begin(), st->pinChanged.end(), vertex) == st->pinChanged.end())
             continue;
         // The newest step that set or freed this vertex: a pin only if it set it.
@@ -354,8 +355,7 @@ EditSession::MeshSize EditSession::meshSize() const {
 }
 
 void EditSession::beginStroke() {
-    foldWatch_.cancel(); // the next edit came first
-    foldTurnedBack_.reset();
+    forgetFoldWatch(); // the next edit came first
     keepSettlingWithLastStroke();
     settledSince_ = kNone;
     pressedFrozen_ = settle_ == Settle::Frozen;
@@ -454,6 +454,7 @@ std::optional<EditSession::StrokeEnd> EditSession::reset(const World& world) {
 }
 
 void EditSession::swapSheet(const World& world, int sheet) {
+    forgetFoldWatch(); // a Reset, or its undo or redo: the flap watched is gone
     releaseGrab();
     setSettle(Settle::None);
     const World& now = sim_.world();
@@ -487,7 +488,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     c.stroke = stroke;
     record(std::move(c));
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size()) || folding()) return std::nullopt;
-    foldWatch_.cancel(); // recovery renumbers vertices
+    forgetFoldWatch(); // recovery renumbers vertices
     const Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
     if (st.worldAfter) { // a Reset
         if (sheet_ != st.sheetAfter || pressed_) return std::nullopt;
@@ -526,7 +527,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
     c.stroke = stroke;
     record(std::move(c));
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size()) || folding()) return std::nullopt;
-    foldWatch_.cancel(); // recovery renumbers vertices
+    forgetFoldWatch(); // recovery renumbers vertices
     if (Stroke& reset = strokes_[static_cast<std::size_t>(stroke)]; reset.worldAfter) {
         if (sheet_ != reset.sheetBefore || pressed_) return std::nullopt;
         // The sheet moved on since the undo: an undo of this redo gives back that.
@@ -621,6 +622,7 @@ void EditSession::settle() {
     record(EditCommand::of(EditCommand::Kind::Settle));
     // Not under a held tool: the stroke would go on through paper that cannot break.
     if (settle_ != Settle::None || busy()) return;
+    forgetFoldWatch(); // frozen, the flap would be read only when something thaws it
     keepSettlingWithLastStroke();
     setSettle(Settle::Settling);
     settleStart_ = sim_.world().stepCount;
@@ -659,6 +661,11 @@ void EditSession::freeze() {
     setSettle(Settle::Frozen);
 }
 
+void EditSession::forgetFoldWatch() {
+    foldWatch_.cancel();
+    foldTurnedBack_.reset();
+}
+
 std::optional<double> EditSession::takeFoldTurnedBack() {
     return std::exchange(foldTurnedBack_, std::nullopt);
 }
@@ -683,6 +690,7 @@ FoldRefusal EditSession::fold(const FoldRequest& request) {
     beginStroke();
     for (const PinGroup& g : plan.motions) setPins(g.vertices, true);
     foldRelease_ = plan.release;
+    foldAngle_ = request.angle;
     auto& groups = sim_.world().script.pins;
     foldGroup_ = groups.size();
     for (PinGroup& g : plan.motions) groups.push_back(std::move(g));
@@ -701,6 +709,7 @@ void EditSession::adoptFoldUnderWay() {
         foldRelease_ =
             foldGroup_ == g ? groups[g].release : std::max(foldRelease_, groups[g].release);
     }
+    foldAngle_ = std::numbers::pi; // not known: the widest reading (FoldWatch)
     if (folding()) beginStroke();
 }
 
@@ -713,7 +722,7 @@ void EditSession::finishFold(bool letGo) {
             if (groups[g].turnRate != 0.0) { // the carry: the flap
                 foldWatch_.start(sim_.world().sheet, groups[g].vertices,
                                  groups[g].turnRate > 0.0 ? groups[g].axis : Vec3(-groups[g].axis),
-                                 sim_.world().time);
+                                 foldAngle_, sim_.world().time);
                 break;
             }
     auto& pinned = sim_.world().sheet.verts.pinned;

@@ -291,8 +291,12 @@ class EditSession {
     double foldRelease_ = 0.0;
     // Ends the fold under way once its flap is let go (or a step failed): an undo step.
     void finishFold(bool letGo);
+    // The fold's flap, watched for a second after its let-go, and what the watch read
+    // (takeFoldTurnedBack); forgotten by any other edit.
     FoldWatch foldWatch_;
     std::optional<double> foldTurnedBack_;
+    double foldAngle_ = 0.0; // the angle the fold under way was asked for, radians
+    void forgetFoldWatch();
     // Takes a sheet's pin groups still to be let go as the fold under way.
     void adoptFoldUnderWay();
     // Another edit must wait: a push or a grab is held, or a fold is under way.

@@ -194,7 +194,8 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
                 std::min(lowestOnTheWay, path.at(V.x[i], std::numbers::pi * k / kDeskChecks).y());
     // The rest of the sheet is held where it lies, as the other hand holds it while one
     // folds: left free, the carry dragged it round, and a second fold across the first
-    // ended with its layers turned up to 20 degrees apart (docs/model.md, "The Fold tool").
+    // ended with its layers turned 1.5-19.8 degrees apart in nine folds (docs/model.md,
+    // "The Fold tool").
     PinGroup rest;
     for (Index i = 0; i < V.size(); ++i)
         if (holdable(i, -1.0)) rest.vertices.push_back(i);

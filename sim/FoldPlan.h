@@ -14,7 +14,8 @@ namespace pf {
 // rest, held there so that the crease is pressed, opened back to `angle` and let go, as a hand
 // folds paper: a crease that was never pressed flat springs open. Where the flap would pass through
 // the desk (a mountain fold of paper lying face up), the sheet is lifted off it first and put down
-// again once folded. The paper must lie within 2 cm of the segment drawn; the fold is then along
+// again once folded. Meanwhile the rest of the sheet is held where it lies, as the other hand
+// holds it. The paper must lie within 2 cm of the segment drawn; the fold is then along
 // the whole straight line through it, as on paper. Nothing is rotated rigidly into place: the flap
 // is carried as a hand carries it, and the crease forms in the band along the line, where the paper
 // bends, through the model's own breaks and hinges (docs/model.md, "The Fold tool").
@@ -42,7 +43,8 @@ struct FoldPlan {
     // The motions, in this order (applyScript lets a later group take over): the lift of
     // the flap and of the rest of the sheet (when the desk is in the way), the carry
     // round by π, the opening back to the angle (below π), and the lowering back onto
-    // the desk. All let go at `release`.
+    // the desk; or, when the sheet is not lifted, the rest of it held still, last. All
+    // let go at `release`.
     std::vector<PinGroup> motions;
     double release = 0.0;
 };

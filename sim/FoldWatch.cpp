@@ -1,14 +1,25 @@
 #include "FoldWatch.h"
 
-#include <Eigen/SVD>
+#include <cmath>
 #include <numbers>
 
 namespace pf {
 
+namespace {
+
+// Across the axis the flap must spread at least this far (rms) for its turn to be read.
+constexpr double kReadableSpread = 0.002; // m
+// A flap folded to an angle can close on past it only a little (it lies on the paper
+// under it); readings are taken up to this far past it.
+constexpr double kClosingRoom = 30.0; // degrees
+
+} // namespace
+
 void FoldWatch::start(const Sheet& sheet, std::vector<Index> flap, const Vec3& carried,
-                      double time) {
+                      double angle, double time) {
     flap_ = std::move(flap);
     carried_ = carried.normalized();
+    angle_ = angle;
     letGo_.clear();
     for (Index i : flap_) letGo_.push_back(sheet.verts.x[i]);
     due_ = time + kSeconds;
@@ -16,38 +27,36 @@ void FoldWatch::start(const Sheet& sheet, std::vector<Index> flap, const Vec3& c
 
 std::optional<double> FoldWatch::check(const Sheet& sheet, double time) {
     if (flap_.empty() || time < due_) return std::nullopt;
-    std::vector<Vec3> now;
-    for (Index i : flap_) {
-        // Breaks only add vertices; what renumbers them (an undo) cancels the watch.
-        if (i >= sheet.verts.size()) {
-            cancel();
-            return std::nullopt;
-        }
-        now.push_back(sheet.verts.x[i]);
-    }
-    const Eigen::AngleAxisd turn = rigidTurn(letGo_, now);
+    const std::vector<Index> flap = std::move(flap_);
     cancel();
-    return -turn.angle() * turn.axis().dot(carried_) * 180.0 / std::numbers::pi;
-}
-
-Eigen::AngleAxisd rigidTurn(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
-    if (from.size() < 3 || from.size() != to.size()) return Eigen::AngleAxisd::Identity();
-    Vec3 a = Vec3::Zero(), b = Vec3::Zero();
-    for (std::size_t k = 0; k < from.size(); ++k) {
-        a += from[k];
-        b += to[k];
+    Vec3 from = Vec3::Zero(), to = Vec3::Zero();
+    for (std::size_t k = 0; k < flap.size(); ++k) {
+        // Breaks only add vertices; what renumbers them (an undo) cancels the watch.
+        if (flap[k] >= sheet.verts.size()) return std::nullopt;
+        from += letGo_[k];
+        to += sheet.verts.x[flap[k]];
     }
-    a /= static_cast<double>(from.size());
-    b /= static_cast<double>(to.size());
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (std::size_t k = 0; k < from.size(); ++k)
-        covariance += (from[k] - a) * (to[k] - b).transpose();
-    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(covariance,
-                                                Eigen::ComputeFullU | Eigen::ComputeFullV);
-    // A proper rotation: a reflection fits a flat flap as well as a turn does.
-    Eigen::Matrix3d sign = Eigen::Matrix3d::Identity();
-    if ((svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0) sign(2, 2) = -1.0;
-    return Eigen::AngleAxisd(Eigen::Matrix3d(svd.matrixV() * sign * svd.matrixU().transpose()));
+    from /= static_cast<double>(flap.size());
+    to /= static_cast<double>(flap.size());
+    // The turn about the carry's axis that best carries the offsets across it: the
+    // least-squares angle, atan2(Σ n·(p × q), Σ p·q).
+    const auto across = [&](const Vec3& d) { return Vec3(d - d.dot(carried_) * carried_); };
+    double sine = 0.0, cosine = 0.0, spread = 0.0;
+    for (std::size_t k = 0; k < flap.size(); ++k) {
+        const Vec3 p = across(letGo_[k] - from), q = across(sheet.verts.x[flap[k]] - to);
+        sine += carried_.dot(p.cross(q));
+        cosine += p.dot(q);
+        spread += p.squaredNorm();
+    }
+    if (spread < static_cast<double>(flap.size()) * kReadableSpread * kReadableSpread)
+        return std::nullopt;
+    double back = -std::atan2(sine, cosine) * 180.0 / std::numbers::pi;
+    // A fold let go at `angle` can turn back at most that far (to flat), and close on
+    // only a little: a turn near a half turn is read within those bounds.
+    const double most = angle_ * 180.0 / std::numbers::pi + kClosingRoom;
+    while (back > most) back -= 360.0;
+    while (back <= most - 360.0) back += 360.0;
+    return back;
 }
 
 } // namespace pf

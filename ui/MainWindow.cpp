@@ -145,7 +145,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                     statusBar()->showMessage(tr("Folded. Edit ▸ Undo unfolds the paper."), 5000);
             });
     // Said once the paper has had its second (EditSession::takeFoldTurnedBack): a third
-    // fold along the diagonal of a sheet folded twice sprang back 111° while the status
+    // fold along the diagonal of a sheet folded twice sprang back 99° while the status
     // bar said "the crease keeps it".
     connect(sim_.get(), &SimulationThread::foldSprangBack, this, [this](double degrees) {
         statusBar()->showMessage(

@@ -16,8 +16,9 @@ struct SimulationStatus {
     double maxStretch = 0.0, rmsStretch = 0.0;
     int threads = 1; // the step runs on
     bool playing = false;
-    bool folding = false;        // a fold is under way: undo, redo and the other tools wait
-    bool resting = false;        // the sheet sleeps: at rest, and costs almost nothing
+    bool folding = false; // a fold is under way: undo, redo and the other tools wait
+    bool asleep = false;  // the integrator sleeps: nothing moves, a step costs almost nothing
+    bool resting = false; // asleep, and no fold under way: the sheet lies at rest
     std::uint64_t sheetHash = 0; // editedStateHash: tells whether it differs from a file
 };
 

@@ -4,6 +4,7 @@
 #include "SimulationThread.h"
 #include "Viewport.h"
 
+#include <QApplication>
 #include <QCursor>
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -162,8 +163,15 @@ void ViewportInput::useFold(const QPoint& pixel, bool held, bool press) {
 
 void ViewportInput::showToolUnderCursor() {
     if (tool_ != Tool::Push || toolShown_ || !viewport_->isVisible()) return;
-    const QPoint at = viewport_->mapFromGlobal(QCursor::pos());
-    if (viewport_->rect().contains(at)) pointTool(at, false);
+    // (QCursor::pos may be stale where the platform does not say where the cursor is,
+    // as on Wayland; the next move corrects it.)
+    const QPoint global = QCursor::pos();
+    const QPoint at = viewport_->mapFromGlobal(global);
+    if (!viewport_->rect().contains(at)) return;
+    // Not under a floating dock or another window that covers the view there.
+    const QWidget* under = QApplication::widgetAt(global);
+    if (under && under != viewport_ && !viewport_->isAncestorOf(under)) return;
+    pointTool(at, false);
 }
 
 void ViewportInput::hideTool() {
