@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace pf {
 
@@ -27,8 +28,7 @@ void FoldWatch::start(const Sheet& sheet, std::vector<Index> flap, const Vec3& c
 
 std::optional<double> FoldWatch::check(const Sheet& sheet, double time) {
     if (flap_.empty() || time < due_) return std::nullopt;
-    const std::vector<Index> flap = std::move(flap_);
-    cancel();
+    const std::vector<Index> flap = std::exchange(flap_, {}); // read once
     Vec3 from = Vec3::Zero(), to = Vec3::Zero();
     for (std::size_t k = 0; k < flap.size(); ++k) {
         // Breaks only add vertices; what renumbers them (an undo) cancels the watch.

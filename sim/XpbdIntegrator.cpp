@@ -932,12 +932,13 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // one vertex of its fold 0.05-0.16 mm a step, in a cycle of about three steps
     // between the sub-steps and the projection, and went nowhere (docs/material.md,
     // "Sleep").
-    const bool undisturbed = !mustWake(sheet);
     constexpr double kQuietSpeed = 5e-4; // m/s
-    paper.quietSteps = undisturbed && stayedWithin(V, stepStart_, kQuietSpeed * params.dt)
-                           ? paper.quietSteps + 1
-                           : 0;
-    if (undisturbed && stayedWithin(V, paper.stillFrom, kStillReach)) {
+    const bool quiet = stayedWithin(V, stepStart_, kQuietSpeed * params.dt);
+    const bool still = stayedWithin(V, paper.stillFrom, kStillReach);
+    // (Only asked of a sheet that kept still: it looks at every vertex and the tool.)
+    const bool undisturbed = (quiet || still) && !mustWake(sheet);
+    paper.quietSteps = quiet && undisturbed ? paper.quietSteps + 1 : 0;
+    if (still && undisturbed) {
         ++paper.stillSteps;
     } else {
         paper.stillSteps = 0;

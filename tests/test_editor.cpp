@@ -595,7 +595,7 @@ class TestEditor : public QObject {
                      QStringLiteral("494 vertices · 2700 springs · 1 break (1/s) · 2 hinges")),
                  qPrintable(shown.join(QStringLiteral(" | "))));
         QVERIFY(shown.contains(QStringLiteral("step 0 µs")));
-        st.resting = true;
+        st.asleep = true;
         readout.show(st);
         shown.clear();
         for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
@@ -1554,7 +1554,7 @@ class TestEditor : public QObject {
         const SimulationStatus pressed = settledStatus(*window);
         QVERIFY(pressed.folding);
         QVERIFY(pressed.asleep || PAPERFOLD_TEST_SLOWDOWN > 1); // (jacobi never sleeps)
-        QVERIFY(!pressed.resting);
+        QVERIFY(!pressed.resting());
         for (int s = 0; s < 300 && recorded.count() == 0; ++s) window->simulation()->stepOnce();
         // Every queued step applied before the wait: under AddressSanitizer, beside other
         // suites, the 600 steps outlasted the 5 s wait once.

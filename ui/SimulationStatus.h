@@ -18,8 +18,9 @@ struct SimulationStatus {
     bool playing = false;
     bool folding = false; // a fold is under way: undo, redo and the other tools wait
     bool asleep = false;  // the integrator sleeps: nothing moves, a step costs almost nothing
-    bool resting = false; // asleep, and no fold under way: the sheet lies at rest
     std::uint64_t sheetHash = 0; // editedStateHash: tells whether it differs from a file
+    // Held pressed flat, a fold's sheet may sleep; it is being folded, not lying at rest.
+    bool resting() const { return asleep && !folding; }
 };
 
 } // namespace pf

@@ -169,8 +169,6 @@ void SimulationWorker::publish(double stepSeconds) {
     st.playing = playing_;
     st.folding = session_.folding();
     st.asleep = session_.simulation().asleep();
-    // Held pressed flat, a fold's sheet may sleep; it is being folded, not lying at rest.
-    st.resting = st.asleep && !st.folding;
     st.sheetHash = editedStateHash(w.sheet);
     emit published(std::make_shared<const SheetSnapshot>(makeSnapshot(session_.simulation())), st);
 }

@@ -30,7 +30,7 @@ void StatusReadout::show(const SimulationStatus& st) {
     updateFps();
     // A user could not tell a sheet lying still from one that only looked still.
     const QString step = tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0);
-    step_->setText(st.resting ? tr("%1 · at rest").arg(step) : step);
+    step_->setText(st.resting() ? tr("%1 · at rest").arg(step) : step);
     // The counts that can be one are said with their plural forms ("1 break", "2 breaks").
     counts_->setText(tr("%1 vertices · %2 springs · %3 (%4/s) · %5")
                          .arg(st.vertices)
