@@ -1172,6 +1172,49 @@ class TestEditor : public QObject {
         QCOMPARE(history->height(), dragged);
     }
 
+    // A message that says what to do is read whole: at 800 pixels the sheet's counts
+    // give way to it (the status bar cut "The fold opened 61° again…" off after
+    // "did not hold", before what to do), and come back when it goes. A short message
+    // leaves them, and so does a wide window.
+    void aLongMessageIsReadWhole() {
+        QStatusBar* bar = window->statusBar();
+        auto* counts = bar->findChild<QLabel*>(QStringLiteral("sheetCounts"));
+        QVERIFY(counts);
+        const QString opened =
+            MainWindow::tr("The fold opened %1° again after it was let go: its crease did not "
+                           "hold the flap. Edit ▸ Undo unfolds the paper.")
+                .arg(61);
+        // Where the status bar draws a message: from its left to the first permanent
+        // widget shown, or to its size grip.
+        const auto roomForTheMessage = [&] {
+            return counts->isVisible() ? counts->geometry().left() : bar->width() - 16;
+        };
+        const int advance = bar->fontMetrics().horizontalAdvance(opened);
+        window->resize(800, 600);
+        QTRY_COMPARE(window->size(), QSize(800, 600));
+        QVERIFY(counts->isVisible());
+        bar->showMessage(opened);
+        QTRY_VERIFY2(advance < roomForTheMessage(),
+                     qPrintable(QStringLiteral("%1 px of message, %2 px of room")
+                                    .arg(advance)
+                                    .arg(roomForTheMessage())));
+        QVERIFY(!counts->isVisible());
+        QCOMPARE(bar->toolTip(), opened);
+        bar->clearMessage();
+        QTRY_VERIFY(counts->isVisible());
+        bar->showMessage(MainWindow::tr("Saved %1").arg(QStringLiteral("a.paper")));
+        QTest::qWait(50);
+        QVERIFY(counts->isVisible());
+        bar->clearMessage();
+        window->resize(1280, 800);
+        QTRY_COMPARE(window->size(), QSize(1280, 800));
+        bar->showMessage(opened);
+        QTest::qWait(50);
+        QVERIFY(counts->isVisible());
+        QVERIFY(advance < roomForTheMessage());
+        bar->clearMessage();
+    }
+
     void thePaperLookReachesTheViewAndTheExports() {
         QTemporaryDir dir;
         window->chooseColor = [](const QColor&) { return QColor(200, 60, 50); };

@@ -1,16 +1,42 @@
 #include "StatusReadout.h"
 
+#include <QEvent>
 #include <QLabel>
 #include <QStatusBar>
 
 namespace pf {
 
 StatusReadout::StatusReadout(QStatusBar* bar)
-    : QObject(bar), fps_(new QLabel(bar)), step_(new QLabel(bar)), counts_(new QLabel(bar)) {
+    : QObject(bar), bar_(bar), fps_(new QLabel(bar)), step_(new QLabel(bar)),
+      counts_(new QLabel(bar)) {
     bar->addWidget(fps_);
     bar->addWidget(step_);
+    counts_->setObjectName(QStringLiteral("sheetCounts"));
     bar->addPermanentWidget(counts_);
+    connect(bar, &QStatusBar::messageChanged, this, &StatusReadout::makeRoomForTheMessage);
+    bar->installEventFilter(this);
     clock_.start();
+}
+
+bool StatusReadout::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == bar_ && event->type() == QEvent::Resize) makeRoomForTheMessage();
+    return QObject::eventFilter(watched, event);
+}
+
+// The status bar draws a message only left of its permanent widgets and cuts it off
+// there: at 800 pixels "The fold opened 61° again…" lost its second half, which says
+// what to do. The counts give way while such a message shows and come back when it
+// goes; a message that does not fit even then can be read
+// whole as the bar's tooltip.
+void StatusReadout::makeRoomForTheMessage() {
+    const QString message = bar_->currentMessage();
+    bar_->setToolTip(message);
+    // The margins QStatusBar keeps round the message and between its widgets.
+    constexpr int kMargins = 24;
+    const int needed = bar_->fontMetrics().horizontalAdvance(message) + kMargins;
+    const bool fits =
+        message.isEmpty() || needed + counts_->sizeHint().width() <= bar_->contentsRect().width();
+    counts_->setVisible(fits);
 }
 
 void StatusReadout::frameDrawn() {

@@ -11,7 +11,8 @@ class QStatusBar;
 namespace pf {
 
 // The status bar's live numbers: frames drawn per second, the cost of a step, and the
-// sheet's size and damage.
+// sheet's size and damage. A message that needs their room (why a fold was refused,
+// that a fold opened again) gets it while it shows.
 class StatusReadout : public QObject {
     Q_OBJECT
 
@@ -24,9 +25,14 @@ class StatusReadout : public QObject {
     // the one shown is not drawn again, so a resting sheet reads about 0 fps.
     void frameDrawn();
 
+  protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
   private:
     void updateFps();
+    void makeRoomForTheMessage();
 
+    QStatusBar* bar_;
     QLabel *fps_, *step_, *counts_;
     QElapsedTimer clock_;
     int frames_ = 0;
