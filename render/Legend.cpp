@@ -1,8 +1,11 @@
 #include "Legend.h"
 
 #include "HeatColor.h"
+#include "Params.h"
 
 #include <QCoreApplication>
+#include <QFontMetrics>
+#include <algorithm>
 #include <vector>
 
 namespace pf {
@@ -23,10 +26,14 @@ void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& optio
         QString unit;
     };
     std::vector<Bar> bars;
+    // Eq. 10's P is drawn per growth of an edge's contraction by the reference amount
+    // (docs/model.md, "Breaking"), no longer per 1/60 s. A file may carry its own
+    // reference; the editor and the command line make none but the default.
     if (options.overlays & OverlayBreakProbability)
-        bars.push_back(
-            {QCoreApplication::translate("Legend", "Break probability P (Eq. 10, per 1/60 s)"),
-             options.probabilityRange, QString()});
+        bars.push_back({QCoreApplication::translate(
+                            "Legend", "Break probability P (Eq. 10, per %1 % more contraction)")
+                            .arg(100.0 * SimParams{}.breakReferenceContraction),
+                        options.probabilityRange, QString()});
     if (options.overlays & OverlayStrain)
         bars.push_back({QCoreApplication::translate("Legend", "Strain |l/l0 - 1|"),
                         options.strainRange * 100.0, QStringLiteral("%")});
@@ -45,6 +52,9 @@ void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& optio
         swatches.push_back(
             {QColor::fromRgbF(0.10, 0.70, 0.20), QCoreApplication::translate("Legend", "hinge")});
     }
+    if (options.overlays & OverlayWireframe)
+        swatches.push_back({QColor::fromRgbF(0.12, 0.12, 0.14),
+                            QCoreApplication::translate("Legend", "simulation mesh (edges)")});
     if (options.overlays & OverlayRecentBreaks)
         swatches.push_back({QColor::fromRgbF(1.0, 0.0, 0.75),
                             QCoreApplication::translate("Legend", "broken in the last second")});
@@ -58,7 +68,14 @@ void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& optio
     const int barW = static_cast<int>(220 * scale), barH = static_cast<int>(12 * scale);
     const int height = pad * 2 + static_cast<int>(bars.size()) * (line * 2 + barH) +
                        static_cast<int>(swatches.size()) * line;
-    const int width = barW + pad * 2 + static_cast<int>(110 * scale);
+    // As wide as its longest line (a title in German is half as long again as the bar).
+    const QFontMetrics metrics(font);
+    const int swatchW = static_cast<int>(32 * scale);
+    int textW = barW + static_cast<int>(110 * scale);
+    for (const Bar& b : bars) textW = std::max(textW, metrics.horizontalAdvance(b.title));
+    for (const Swatch& s : swatches)
+        textW = std::max(textW, swatchW + metrics.horizontalAdvance(s.label));
+    const int width = std::min(textW + pad * 2, area.width() - 2 * pad);
     const QRect box(area.left() + pad, area.bottom() - height - pad, width, height);
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setPen(Qt::NoPen);
@@ -85,7 +102,7 @@ void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& optio
         painter.fillRect(QRect(box.left() + pad, y + line / 2 - 2, static_cast<int>(24 * scale),
                                static_cast<int>(4 * scale)),
                          s.color);
-        painter.drawText(QRect(box.left() + pad + static_cast<int>(32 * scale), y, width, line),
+        painter.drawText(QRect(box.left() + pad + swatchW, y, width - swatchW - 2 * pad, line),
                          Qt::AlignLeft | Qt::AlignVCenter, s.label);
         y += line;
     }

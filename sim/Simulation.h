@@ -60,6 +60,7 @@ class Simulation {
 
     // A vertex the user holds (a grab): the scene script leaves it to the user.
     void setHeldVertex(Index vertex) { heldVertex_ = vertex; }
+    Index heldVertex() const { return heldVertex_; }
 
     World& world() { return world_; }
     const World& world() const { return world_; }

@@ -537,6 +537,10 @@ class TestEditSession : public QObject {
         const Vec3 target = corner + Vec3(0.02, 0.08, 0.0);
         session.grab(target, true, false);
         session.advance(1);
+        // The hand is drawn as a hand, not as a pin the user set (red crosses are pins).
+        const SheetSnapshot held = makeSnapshot(session.simulation());
+        QCOMPARE(held.held, std::vector<Index>{0});
+        QVERIFY(held.pinned.empty());
         QVERIFY((session.world().sheet.verts.x[0] - corner).norm() <=
                 EditSession::kMaxToolSpeed * dt * (1 + 1e-12));
         session.advance(119);

@@ -4,8 +4,12 @@
 <context>
     <name>Legend</name>
     <message>
-        <source>Break probability P (Eq. 10, per 1/60 s)</source>
-        <translation>Bruchwahrscheinlichkeit P (Gl. 10, je 1/60 s)</translation>
+        <source>simulation mesh (edges)</source>
+        <translation>Simulationsnetz (Kanten)</translation>
+    </message>
+    <message>
+        <source>Break probability P (Eq. 10, per %1 % more contraction)</source>
+        <translation>Bruchwahrscheinlichkeit P (Gl. 10, je %1 % mehr Stauchung)</translation>
     </message>
     <message>
         <source>Strain |l/l0 - 1|</source>
@@ -745,6 +749,18 @@
 </context>
 <context>
     <name>pf::SolverPanel</name>
+    <message>
+        <source>tissue</source>
+        <translation>Seidenpapier</translation>
+    </message>
+    <message>
+        <source>office</source>
+        <translation>Büropapier</translation>
+    </message>
+    <message>
+        <source>card</source>
+        <translation>Karton</translation>
+    </message>
     <message>
         <source>%1 µs</source>
         <translation>%1 µs</translation>

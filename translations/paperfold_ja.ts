@@ -4,8 +4,12 @@
 <context>
     <name>Legend</name>
     <message>
-        <source>Break probability P (Eq. 10, per 1/60 s)</source>
-        <translation>破断確率 P（式10、1/60 秒あたり）</translation>
+        <source>simulation mesh (edges)</source>
+        <translation>シミュレーションメッシュ（辺）</translation>
+    </message>
+    <message>
+        <source>Break probability P (Eq. 10, per %1 % more contraction)</source>
+        <translation>破断確率 P（式10、収縮が %1 % 増えるごと）</translation>
     </message>
     <message>
         <source>Strain |l/l0 - 1|</source>
@@ -42,7 +46,7 @@
     </message>
     <message>
         <source>Change %1</source>
-        <translation>%1 を変更</translation>
+        <translation>%1を変更</translation>
     </message>
     <message>
         <source>stretch stiffness</source>
@@ -66,7 +70,7 @@
     </message>
     <message>
         <source>steps per second</source>
-        <translation>毎秒のステップ数</translation>
+        <translation>1秒あたりのステップ数</translation>
     </message>
     <message>
         <source>gravity outside the filter</source>
@@ -740,6 +744,18 @@
 </context>
 <context>
     <name>pf::SolverPanel</name>
+    <message>
+        <source>tissue</source>
+        <translation>薄葉紙</translation>
+    </message>
+    <message>
+        <source>office</source>
+        <translation>コピー用紙</translation>
+    </message>
+    <message>
+        <source>card</source>
+        <translation>厚紙</translation>
+    </message>
     <message>
         <source>%1 µs</source>
         <translation>%1 µs</translation>

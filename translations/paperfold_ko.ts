@@ -4,8 +4,12 @@
 <context>
     <name>Legend</name>
     <message>
-        <source>Break probability P (Eq. 10, per 1/60 s)</source>
-        <translation>파단 확률 P (식 10, 1/60초당)</translation>
+        <source>simulation mesh (edges)</source>
+        <translation>시뮬레이션 메시 (모서리)</translation>
+    </message>
+    <message>
+        <source>Break probability P (Eq. 10, per %1 % more contraction)</source>
+        <translation>파단 확률 P (식 10, 수축이 %1 % 늘 때마다)</translation>
     </message>
     <message>
         <source>Strain |l/l0 - 1|</source>
@@ -740,6 +744,18 @@
 </context>
 <context>
     <name>pf::SolverPanel</name>
+    <message>
+        <source>tissue</source>
+        <translation>얇은 종이</translation>
+    </message>
+    <message>
+        <source>office</source>
+        <translation>사무용지</translation>
+    </message>
+    <message>
+        <source>card</source>
+        <translation>판지</translation>
+    </message>
     <message>
         <source>%1 µs</source>
         <translation>%1 µs</translation>

@@ -23,7 +23,10 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
     for (const auto& name : integratorNames()) integrator_->addItem(QString::fromStdString(name));
     materialLabel_ = new QLabel(this);
     material_ = new QComboBox(this);
-    for (const auto& name : materialNames()) material_->addItem(QString::fromStdString(name));
+    // The preset's name is its item's data, as files and the command line say it; the
+    // text shown is the name in the window's language (retranslate).
+    for (const auto& name : materialNames())
+        material_->addItem(QString::fromStdString(name), QString::fromStdString(name));
     iterationsLabel_ = new QLabel(this);
     iterations_ = new QSpinBox(this);
     iterations_->setRange(0, 50);
@@ -68,9 +71,9 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
         emitEdit(QStringLiteral("integrator"),
                  [n = name.toStdString()](SimParams& p) { p.integrator = n; });
     });
-    connect(material_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+    connect(material_, &QComboBox::currentIndexChanged, this, [this](int index) {
         Material m;
-        if (materialPreset(name.toStdString(), m))
+        if (materialPreset(material_->itemData(index).toString().toStdString(), m))
             emitEdit(QStringLiteral("material"), [m](SimParams& p) { p.material = m; });
     });
     for (QSpinBox* box : {iterations_, stepsPerSecond_, threads_}) box->setKeyboardTracking(false);
@@ -108,7 +111,7 @@ void SolverPanel::showParams(const SimParams& params) {
     updating_ = true;
     integrator_->setCurrentText(QString::fromStdString(params.integrator));
     enableWhatItUses(params.integrator);
-    material_->setCurrentText(QString::fromStdString(params.material.name));
+    material_->setCurrentIndex(material_->findData(QString::fromStdString(params.material.name)));
     iterations_->setValue(params.iterations);
     stepsPerSecond_->setValue(static_cast<int>(std::lround(1.0 / params.dt)));
     gravityOutside_->setChecked(params.gravityOutsideFilter);
@@ -134,6 +137,13 @@ void SolverPanel::changeEvent(QEvent* event) {
     QWidget::changeEvent(event);
 }
 
+QString SolverPanel::paperName(const QString& preset) {
+    if (preset == QLatin1String("tissue")) return tr("tissue");
+    if (preset == QLatin1String("office")) return tr("office");
+    if (preset == QLatin1String("card")) return tr("card");
+    return preset;
+}
+
 void SolverPanel::retranslate() {
     integratorLabel_->setText(tr("Integrator"));
     integrator_->setToolTip(tr("jacobi: the paper's approximate implicit step (Eq. 6); "
@@ -141,6 +151,8 @@ void SolverPanel::retranslate() {
                                "backward-euler: the exact implicit step (slow, the reference); "
                                "xpbd: paper from its physical constants (docs/material.md)."));
     materialLabel_->setText(tr("Paper"));
+    for (int i = 0; i < material_->count(); ++i)
+        material_->setItemText(i, paperName(material_->itemData(i).toString()));
     material_->setToolTip(tr("The paper's weight, stretch and bending stiffness and friction, "
                              "used by the xpbd integrator: tissue 20 g/m², office 80 g/m², "
                              "card 250 g/m²."));

@@ -46,6 +46,8 @@ class SolverPanel : public QWidget {
 
   private:
     void retranslate();
+    // A paper preset's name in the window's language ("office" in English).
+    static QString paperName(const QString& preset);
     void emitEdit(const QString& what, const ParamChange& change);
     void enableWhatItUses(const std::string& integrator);
 
