@@ -82,6 +82,21 @@ class TestFramePacer : public QObject {
         QCOMPARE(pacer.stepsFor(0.0070, kDt, 1e-4), 2);
     }
 
+    // The pace is what the ticks gave over the last whole second: real time where the
+    // machine keeps up, and where it cannot (steps of 6 ms against 4.2 ms of dt, four a
+    // tick that comes every 24 ms), 4.2 / 6 of it. A pause forgets it.
+    void thePaceIsSimulatedSecondsPerSecond() {
+        FramePacer pacer;
+        QCOMPARE(pacer.pace(), 1.0);
+        for (int tick = 0; tick < 200; ++tick) pacer.stepsFor(0.016, kDt, 1e-4);
+        QVERIFY2(std::abs(pacer.pace() - 1.0) < 0.02, qPrintable(QString::number(pacer.pace())));
+        for (int tick = 0; tick < 100; ++tick) pacer.stepsFor(0.024, kDt, 0.006);
+        QVERIFY2(std::abs(pacer.pace() - kDt / 0.006) < 1e-9,
+                 qPrintable(QString::number(pacer.pace())));
+        pacer.restart();
+        QCOMPARE(pacer.pace(), 1.0);
+    }
+
     void aRestartForgetsWhatIsOwed() {
         FramePacer pacer;
         QCOMPARE(pacer.stepsFor(0.0035, kDt), 0); // 3.5 ms owed

@@ -855,6 +855,14 @@
 <context>
     <name>pf::StatusReadout</name>
     <message>
+        <source>%1 · %2× real time</source>
+        <translation>%1 · %2× Echtzeit</translation>
+    </message>
+    <message>
+        <source>The computer cannot take the steps as fast as they happen: the sheet moves slower than in real time. Fewer steps per second (Solver dock), a smaller sheet or another integrator are faster.</source>
+        <translation>Der Computer schafft die Schritte nicht so schnell, wie sie geschehen: Das Blatt bewegt sich langsamer als in Echtzeit. Weniger Schritte pro Sekunde (Löser-Dock), ein kleineres Blatt oder ein anderer Integrator sind schneller.</translation>
+    </message>
+    <message>
         <source>%1 fps</source>
         <translation>%1 fps</translation>
     </message>

@@ -848,6 +848,14 @@
 <context>
     <name>pf::StatusReadout</name>
     <message>
+        <source>%1 · %2× real time</source>
+        <translation>%1 · 実時間の%2倍</translation>
+    </message>
+    <message>
+        <source>The computer cannot take the steps as fast as they happen: the sheet moves slower than in real time. Fewer steps per second (Solver dock), a smaller sheet or another integrator are faster.</source>
+        <translation>コンピュータが時間どおりにステップを計算できません。紙は実時間より遅く動いています。1秒あたりのステップ数を減らす（ソルバー）、紙を小さくする、別の積分器を選ぶと速くなります。</translation>
+    </message>
+    <message>
         <source>%1 fps</source>
         <translation>%1 fps</translation>
     </message>

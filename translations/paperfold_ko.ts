@@ -848,6 +848,14 @@
 <context>
     <name>pf::StatusReadout</name>
     <message>
+        <source>%1 · %2× real time</source>
+        <translation>%1 · 실시간의 %2배</translation>
+    </message>
+    <message>
+        <source>The computer cannot take the steps as fast as they happen: the sheet moves slower than in real time. Fewer steps per second (Solver dock), a smaller sheet or another integrator are faster.</source>
+        <translation>컴퓨터가 시간에 맞춰 스텝을 계산하지 못합니다. 종이가 실시간보다 느리게 움직입니다. 초당 스텝 수를 줄이거나(솔버 패널), 더 작은 종이나 다른 적분기를 쓰면 빨라집니다.</translation>
+    </message>
+    <message>
         <source>%1 fps</source>
         <translation>%1 fps</translation>
     </message>

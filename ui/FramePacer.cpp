@@ -5,8 +5,25 @@
 
 namespace pf {
 
+void FramePacer::restart() {
+    owed_ = 0.0;
+    windowWall_ = windowSimulated_ = 0.0;
+    pace_ = 1.0;
+}
+
 int FramePacer::stepsFor(double elapsed, double dt, double stepCost) {
     if (!(dt > 0.0) || !(elapsed > 0.0)) return 0;
+    const int steps = stepsDue(elapsed, dt, stepCost);
+    windowWall_ += elapsed;
+    windowSimulated_ += steps * dt;
+    if (windowWall_ >= 1.0) {
+        pace_ = windowSimulated_ / windowWall_;
+        windowWall_ = windowSimulated_ = 0.0;
+    }
+    return steps;
+}
+
+int FramePacer::stepsDue(double elapsed, double dt, double stepCost) {
     const auto stepsIn = [dt](double seconds) { return std::max(1.0, std::round(seconds / dt)); };
     if (stepCost > dt) {
         owed_ = 0.0;

@@ -14,7 +14,8 @@ struct SimulationStatus {
     // longer (SheetStats). Not |l/l0 - 1|: across a fold most of that is the chord of
     // paper bending between two vertices, and a user read 16-22 % there as stretch.
     double maxStretch = 0.0, rmsStretch = 0.0;
-    int threads = 1; // the step runs on
+    int threads = 1;   // the step runs on
+    double pace = 1.0; // simulated seconds per wall-clock second while playing (FramePacer)
     bool playing = false;
     bool folding = false; // a fold is under way: undo, redo and the other tools wait
     bool asleep = false;  // the integrator sleeps: nothing moves, a step costs almost nothing

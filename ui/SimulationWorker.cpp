@@ -167,6 +167,7 @@ void SimulationWorker::publish(double stepSeconds) {
     st.rmsStretch = stats.rmsStretch;
     st.threads = session_.simulation().threads();
     st.playing = playing_;
+    st.pace = pacer_.pace();
     st.folding = session_.folding();
     st.asleep = session_.simulation().asleep();
     st.sheetHash = editedStateHash(w.sheet);

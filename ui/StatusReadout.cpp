@@ -12,6 +12,7 @@ StatusReadout::StatusReadout(QStatusBar* bar)
     bar->addWidget(fps_);
     bar->addWidget(step_);
     counts_->setObjectName(QStringLiteral("sheetCounts"));
+    step_->setObjectName(QStringLiteral("stepReadout"));
     bar->addPermanentWidget(counts_);
     connect(bar, &QStatusBar::messageChanged, this, &StatusReadout::makeRoomForTheMessage);
     bar->installEventFilter(this);
@@ -55,8 +56,18 @@ void StatusReadout::updateFps() {
 void StatusReadout::show(const SimulationStatus& st) {
     updateFps();
     // A user could not tell a sheet lying still from one that only looked still.
-    const QString step = tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0);
-    step_->setText(st.resting() ? tr("%1 · at rest").arg(step) : step);
+    QString step = tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0);
+    if (st.resting()) step = tr("%1 · at rest").arg(step);
+    // Behind real time, the paper falls and slides slower than paper does: say so, and
+    // what helps.
+    const bool behind = st.playing && st.pace < kBehindRealTime;
+    if (behind) step = tr("%1 · %2× real time").arg(step).arg(st.pace, 0, 'f', 2);
+    step_->setText(step);
+    step_->setToolTip(behind ? tr("The computer cannot take the steps as fast as they happen: "
+                                  "the sheet moves slower than in real time. Fewer steps per "
+                                  "second (Solver dock), a smaller sheet or another integrator "
+                                  "are faster.")
+                             : QString());
     // The counts that can be one are said with their plural forms ("1 break", "2 breaks").
     counts_->setText(tr("%1 vertices · %2 springs · %3 (%4/s) · %5")
                          .arg(st.vertices)

@@ -17,6 +17,10 @@ class StatusReadout : public QObject {
     Q_OBJECT
 
   public:
+    // Below this pace (simulated seconds per second) the status bar says the sheet runs
+    // behind real time: the pacer's own rounding and a late tick stay above it.
+    static constexpr double kBehindRealTime = 0.9;
+
     explicit StatusReadout(QStatusBar* bar);
 
     // The simulation's numbers, once per snapshot published.
