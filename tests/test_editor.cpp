@@ -347,6 +347,28 @@ class TestEditor : public QObject {
         QCOMPARE(window->params().phi, 0.40);
     }
 
+    // A button held on the slider's groove repeats its page step: one gesture, one undo
+    // step (a user's held press took ψ 0.25 → 0.15 → 0.10 as two History rows). A
+    // second click is a gesture of its own.
+    void aButtonHeldOnTheGrooveIsOneUndoStep() {
+        QSlider* s = window->panel()->phiSlider();
+        const QPoint farRight(s->width() - 3, s->height() / 2);
+        QTest::mousePress(s, Qt::LeftButton, {}, farRight);
+        QTest::qWait(1200); // past the repeat's delay: several page steps
+        QTest::mouseRelease(s, Qt::LeftButton, {}, farRight);
+        QVERIFY2(window->params().phi > 0.25, qPrintable(QString::number(window->params().phi)));
+        QCOMPARE(window->undoStack()->count(), 1);
+        const double held = window->params().phi;
+        const QPoint farLeft(3, s->height() / 2);
+        QTest::mouseClick(s, Qt::LeftButton, {}, farLeft);
+        QVERIFY(window->params().phi < held);
+        QCOMPARE(window->undoStack()->count(), 2);
+        window->undoStack()->undo();
+        QCOMPARE(window->params().phi, held);
+        window->undoStack()->undo();
+        QCOMPARE(window->params().phi, 0.10);
+    }
+
     void pushStrokeBreaksAndUndoRedoRestoreTheCount() {
         openInJacobi();
         const SimulationStatus before = settledStatus(*window);

@@ -125,12 +125,16 @@ ParameterPanel::SliderRow ParameterPanel::addSliderRow(QGridLayout* grid, int ro
         ++drag_;
     });
     connect(r.slider, &QSlider::sliderReleased, this, [this] { sliderDown_ = false; });
+    r.slider->installEventFilter(this);
     connect(r.slider, &QSlider::valueChanged, this, [this, r, index](int v) {
         if (updating_) return;
         updating_ = true;
         r.spin->setValue(v / r.scale);
         updating_ = false;
-        if (!sliderDown_) ++drag_; // a click or a key on the slider is a gesture of its own
+        // A key on the slider is a gesture of its own; so is a click, but a button held on
+        // the groove repeats its page step, which a user took for one change and found
+        // as two or more in the History.
+        if (!sliderDown_ && !mouseOnSlider_) ++drag_;
         rowEdited(index, v / r.scale);
     });
     connect(r.spin, &QDoubleSpinBox::valueChanged, this, [this, r, index](double v) {
@@ -142,6 +146,18 @@ ParameterPanel::SliderRow ParameterPanel::addSliderRow(QGridLayout* grid, int ro
         rowEdited(index, v);
     });
     return r;
+}
+
+bool ParameterPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (qobject_cast<QSlider*>(watched)) {
+        if (event->type() == QEvent::MouseButtonPress) {
+            mouseOnSlider_ = true;
+            ++drag_;
+        } else if (event->type() == QEvent::MouseButtonRelease) {
+            mouseOnSlider_ = false;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void ParameterPanel::rowEdited(int row, double value) {

@@ -64,6 +64,7 @@ class ParameterPanel : public QWidget {
     SliderRow addSliderRow(QGridLayout* grid, int row, double min, double max, int decimals,
                            double scale);
     void retranslate();
+    bool eventFilter(QObject* watched, QEvent* event) override;
     void emitEdit(const QString& what, const ParamChange& change);
     void rowEdited(int row, double value);
 
@@ -82,6 +83,9 @@ class ParameterPanel : public QWidget {
     QLabel* sheetNote_ = nullptr;
     int drag_ = 0;
     bool sliderDown_ = false;
+    // The mouse is held down on a slider, on its handle or its groove: one gesture,
+    // however many page steps the held button repeats.
+    bool mouseOnSlider_ = false;
     bool updating_ = false;
 };
 
