@@ -1006,13 +1006,19 @@ class TestEditor : public QObject {
             ++asked;
             return QString();
         };
-        for (const QSize size : {QSize(0, 0), QSize(8, 600), QSize(9000, 100)}) {
-            lastError.clear();
-            window->chooseImageSize = [size] { return size; };
-            window->action("exportImage")->trigger();
-            QVERIFY(lastError.contains(QStringLiteral("8192")));
-        }
+        // Each size out of range is said, and the size asked again (not the export
+        // ended), until the dialog is cancelled.
+        const QList<QSize> typed = {QSize(0, 0), QSize(8, 600), QSize(9000, 100), QSize()};
+        int sizesAsked = 0, errors = 0;
+        window->showError = [&](const QString& m) {
+            if (m.contains(QStringLiteral("8192"))) ++errors;
+        };
+        window->chooseImageSize = [&] { return typed[sizesAsked++]; };
+        window->action("exportImage")->trigger();
+        QCOMPARE(sizesAsked, 4);
+        QCOMPARE(errors, 3);
         QCOMPARE(asked, 0);
+        window->showError = [this](const QString& m) { lastError = m; };
         window->chooseImageSize = [] { return QSize(); }; // cancelled: nothing said
         lastError.clear();
         window->action("exportImage")->trigger();

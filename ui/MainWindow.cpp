@@ -786,14 +786,19 @@ void MainWindow::exportImage() {
     // Held for the worker: new frames replace the viewport's while it renders.
     const std::shared_ptr<const SheetSnapshot> snap = viewport_->sharedSnapshot();
     if (!snap) return;
-    const QSize size = chooseImageSize();
-    if (!size.isValid()) return; // cancelled
+    // A size out of range is said and asked again (a user's 0x0 ended the export, which
+    // had to be started over), until one fits or the dialog is cancelled.
     const int most = OffscreenRenderer::kMaxSize;
-    if (size.width() < 16 || size.height() < 16 || size.width() > most || size.height() > most) {
+    QSize size;
+    for (;;) {
+        size = chooseImageSize();
+        if (!size.isValid()) return; // cancelled
+        if (size.width() >= 16 && size.height() >= 16 && size.width() <= most &&
+            size.height() <= most)
+            break;
         showError(tr("The image size is width x height, each from 16 to %1 pixels, such as "
                      "1920x1080.")
                       .arg(most));
-        return;
     }
     const QString path = chooseFileToWrite(FileDialog::ExportImage);
     if (path.isEmpty()) return;
