@@ -22,17 +22,29 @@ class BoundedReader {
     std::optional<QCborValue> read(QString* error) {
         QCborValue root = value(0);
         if (failed()) {
-            if (error)
-                *error = problem_.isEmpty() ? QStringLiteral("not a valid CBOR file at byte %1: %2")
-                                                  .arg(reader_.currentOffset())
-                                                  .arg(reader_.lastError().toString())
-                                            : problem_;
+            if (error) *error = problem_.isEmpty() ? readerProblem() : problem_;
             return std::nullopt;
         }
         return root;
     }
 
   private:
+    // A file that stops in the middle is the likeliest bad file a user meets (a copy or
+    // a download cut short): said in those words, not as the reader's "unexpected end of
+    // input data".
+    QString readerProblem() {
+        const QCborError e = reader_.lastError();
+        if (e == QCborError::EndOfFile && reader_.currentOffset() == 0)
+            return QStringLiteral("the file is empty");
+        if (e == QCborError::EndOfFile)
+            return QStringLiteral("the file ends at byte %1, in the middle of its data: it "
+                                  "was cut short (an interrupted copy or download?)")
+                .arg(reader_.currentOffset());
+        return QStringLiteral("not a valid CBOR file at byte %1: %2")
+            .arg(reader_.currentOffset())
+            .arg(e.toString());
+    }
+
     bool failed() { return !problem_.isEmpty() || reader_.lastError() != QCborError::NoError; }
     QCborValue fail(const QString& message) {
         if (problem_.isEmpty()) problem_ = message;

@@ -530,7 +530,7 @@ class TestEditor : public QObject {
         const auto before = worldOf(*window);
         window->action("open")->trigger();
         QVERIFY(lastError.contains(QStringLiteral("broken.paper")));
-        QVERIFY(lastError.contains(QStringLiteral("CBOR")));
+        QVERIFY(lastError.contains(QStringLiteral("cut short")));
         const auto after = worldOf(*window);
         QCOMPARE(stateHash(after->sheet), stateHash(before->sheet));
         QVERIFY(window->currentFile().isEmpty());

@@ -499,7 +499,7 @@ class TestSheetFile : public QObject {
     void brokenFilesAreRefusedWithAMessage_data() {
         QTest::addColumn<QByteArray>("bytes");
         QTest::addColumn<QString>("mentions");
-        QTest::newRow("empty") << QByteArray() << "CBOR";
+        QTest::newRow("empty") << QByteArray() << "empty";
         QTest::newRow("not cbor") << QByteArray("hello, I am a text file\n") << "";
         QTest::newRow("wrong magic")
             << withField({"magic"}, QStringLiteral("PaperFold shoot")) << "magic";
@@ -578,6 +578,10 @@ class TestSheetFile : public QObject {
             refused += !decodeWorld(good.left(n)).world;
         }
         QCOMPARE(refused, tried);
+        // Said as what it is: a user read "Unexpected end of input data (more bytes
+        // needed)" for a file cut short.
+        const QString half = decodeWorld(good.left(good.size() / 2)).error;
+        QVERIFY2(half.contains(QStringLiteral("cut short")), qPrintable(half));
     }
 
     void bitFlipsNeverCrash() {
