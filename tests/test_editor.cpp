@@ -858,6 +858,14 @@ class TestEditor : public QObject {
         QCOMPARE(window->undoStack()->count(), 1);
         window->simulation()->sync();
         QCOMPARE(worldOf(*window)->params.phi, 0.10);
+        // Out of range, the nearest value allowed, not the old one kept unsaid.
+        QSpinBox* steps = window->solverPanel()->stepsPerSecondBox();
+        steps->setFocus();
+        steps->selectAll();
+        QTest::keyClicks(steps, QStringLiteral("10"));
+        QTest::keyClick(steps, Qt::Key_Return);
+        QCOMPARE(steps->value(), steps->minimum());
+        QCOMPARE(window->params().dt, 1.0 / steps->minimum());
     }
 
     // The first-run hint shows until the first thing done in the view, and not again.

@@ -76,7 +76,12 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
         if (materialPreset(material_->itemData(index).toString().toStdString(), m))
             emitEdit(QStringLiteral("material"), [m](SimParams& p) { p.material = m; });
     });
-    for (QSpinBox* box : {iterations_, stepsPerSecond_, threads_}) box->setKeyboardTracking(false);
+    // A number typed out of range becomes the nearest one allowed on Enter: left as it
+    // was, a user's 10 steps a second was dropped without a word.
+    for (QSpinBox* box : {iterations_, stepsPerSecond_, threads_}) {
+        box->setKeyboardTracking(false);
+        box->setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue);
+    }
     connect(threads_, &QSpinBox::valueChanged, this, [this](int n) {
         if (!updating_) emit threadsChanged(n);
     });

@@ -31,6 +31,7 @@ class SolverPanel : public QWidget {
     QSpinBox* iterationsBox() const { return iterations_; }
     QCheckBox* gravityBox() const { return gravityOutside_; }
     QSpinBox* threadsBox() const { return threads_; }
+    QSpinBox* stepsPerSecondBox() const { return stepsPerSecond_; }
     QLabel* stretchLabel() const { return stretch_; }
     QLabel* breakRateLabel() const { return breakRate_; }
 
