@@ -1,6 +1,7 @@
 // The editor driven like a user: QTest mouse and actions on a real MainWindow
 // (under xvfb-run), checked against what the simulation thread reports.
 #include "ChartBrowser.h"
+#include "EditorDialogs.h"
 #include "FoldAngle.h"
 #include "JacobiScene.h"
 #include "Language.h"
@@ -30,6 +31,7 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QGroupBox>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
@@ -1006,6 +1008,27 @@ class TestEditor : public QObject {
         QVERIFY(waitForCount(redone, 1));
         QCOMPARE(worldOf(*window)->sheet.verts.size(), Index(494));
         checkReplay(*window, nextFile, lastError);
+    }
+
+    // The Export Mesh dialog wraps its sentence (on one line it was about 750 pixels
+    // wide) and gives back the level chosen, or -1 when cancelled.
+    void theMeshLevelDialogIsNotWiderThanItsSentenceNeeds() {
+        int width = 0;
+        QTimer::singleShot(0, window.get(), [&] {
+            for (QWidget* w : QApplication::topLevelWidgets())
+                if (auto* d = qobject_cast<QInputDialog*>(w); d && d->isVisible()) {
+                    width = d->width();
+                    d->setIntValue(1);
+                    d->accept();
+                }
+        });
+        QCOMPARE(EditorDialogs::chooseMeshSubdivision(window.get(), 3), 1);
+        QVERIFY2(width > 0 && width < 560, qPrintable(QString::number(width)));
+        QTimer::singleShot(0, window.get(), [&] {
+            for (QWidget* w : QApplication::topLevelWidgets())
+                if (auto* d = qobject_cast<QInputDialog*>(w); d && d->isVisible()) d->reject();
+        });
+        QCOMPARE(EditorDialogs::chooseMeshSubdivision(window.get(), 3), -1);
     }
 
     void aBadImageSizeIsRefusedBeforeAskingForAFile() {

@@ -5,6 +5,7 @@
 #include <QColorDialog>
 #include <QFileDialog>
 #include <QInputDialog>
+#include <QLabel>
 #include <algorithm>
 
 namespace pf {
@@ -59,13 +60,19 @@ QColor EditorDialogs::chooseColor(QWidget* parent, const QColor& current) {
 }
 
 int EditorDialogs::chooseMeshSubdivision(QWidget* parent, int current) {
-    bool ok = false;
-    const int level = QInputDialog::getInt(
-        parent, tr("Export Mesh"),
-        tr("Subdivision level: 0 writes the simulation mesh; each level splits every "
-           "triangle in four along the paper's curved surface."),
-        current, 0, kMaxSubdivisionLevel, 1, &ok);
-    return ok ? level : -1;
+    QInputDialog dialog(parent);
+    dialog.setWindowTitle(tr("Export Mesh"));
+    dialog.setLabelText(tr("Subdivision level: 0 writes the simulation mesh; each level splits "
+                           "every triangle in four along the paper's curved surface."));
+    dialog.setInputMode(QInputDialog::IntInput);
+    dialog.setIntRange(0, kMaxSubdivisionLevel);
+    dialog.setIntValue(current);
+    // On one line the sentence made the dialog about 750 pixels wide.
+    if (auto* label = dialog.findChild<QLabel*>()) {
+        label->setWordWrap(true);
+        label->setMinimumWidth(320);
+    }
+    return dialog.exec() == QDialog::Accepted ? dialog.intValue() : -1;
 }
 
 } // namespace pf
