@@ -17,7 +17,7 @@ constexpr int kMaxSkipDepth = 64;
 class BoundedReader {
   public:
     BoundedReader(const QByteArray& bytes, const CborBounds& bounds)
-        : reader_(bytes), bounds_(bounds) {}
+        : reader_(bytes), bounds_(bounds), size_(bytes.size()) {}
 
     std::optional<QCborValue> read(QString* error) {
         QCborValue root = value(0);
@@ -36,10 +36,11 @@ class BoundedReader {
         const QCborError e = reader_.lastError();
         if (e == QCborError::EndOfFile && reader_.currentOffset() == 0)
             return QStringLiteral("the file is empty");
+        // (The reader's offset is where the value that ran out began, not the end.)
         if (e == QCborError::EndOfFile)
-            return QStringLiteral("the file ends at byte %1, in the middle of its data: it "
-                                  "was cut short (an interrupted copy or download?)")
-                .arg(reader_.currentOffset());
+            return QStringLiteral("the file ends after %1 bytes, in the middle of its data: "
+                                  "it was cut short (an interrupted copy or download?)")
+                .arg(size_);
         return QStringLiteral("not a valid CBOR file at byte %1: %2")
             .arg(reader_.currentOffset())
             .arg(e.toString());
@@ -169,6 +170,7 @@ class BoundedReader {
 
     QCborStreamReader reader_;
     const CborBounds& bounds_;
+    qsizetype size_ = 0;
     qint64 values_ = 0;
     QString problem_;
 };

@@ -1252,6 +1252,21 @@ class TestEditor : public QObject {
         window->action("play")->setChecked(false);
         window->simulation()->sync();
         QTRY_VERIFY(!step->text().contains(QStringLiteral("real time")));
+
+        // Nor at rest, whatever the last second's pace: a user read "at rest · 0.74×
+        // real time" in the second after a slow stroke.
+        QStatusBar bar;
+        StatusReadout readout(&bar);
+        auto* label = bar.findChild<QLabel*>(QStringLiteral("stepReadout"));
+        SimulationStatus st;
+        st.playing = true;
+        st.pace = 0.5;
+        readout.show(st);
+        QVERIFY(label->text().contains(QStringLiteral("0.50× real time")));
+        st.asleep = true;
+        readout.show(st);
+        QVERIFY2(!label->text().contains(QStringLiteral("real time")), qPrintable(label->text()));
+        QVERIFY(label->text().contains(QStringLiteral("at rest")));
     }
 
     // A message that says what to do is read whole: at 800 pixels the sheet's counts

@@ -580,8 +580,11 @@ class TestSheetFile : public QObject {
         QCOMPARE(refused, tried);
         // Said as what it is: a user read "Unexpected end of input data (more bytes
         // needed)" for a file cut short.
-        const QString half = decodeWorld(good.left(good.size() / 2)).error;
+        const QByteArray halfFile = good.left(good.size() / 2);
+        const QString half = decodeWorld(halfFile).error;
         QVERIFY2(half.contains(QStringLiteral("cut short")), qPrintable(half));
+        QVERIFY2(half.contains(QStringLiteral("after %1 bytes").arg(halfFile.size())),
+                 qPrintable(half));
     }
 
     void bitFlipsNeverCrash() {

@@ -60,7 +60,9 @@ void StatusReadout::show(const SimulationStatus& st) {
     if (st.resting()) step = tr("%1 · at rest").arg(step);
     // Behind real time, the paper falls and slides slower than paper does: say so, and
     // what helps.
-    const bool behind = st.playing && st.pace < kBehindRealTime;
+    // (A sheet at rest keeps up whatever the last second's pace was: a user read
+    // "at rest · 0.74× real time" for the second after a slow stroke.)
+    const bool behind = st.playing && !st.resting() && st.pace < kBehindRealTime;
     if (behind) step = tr("%1 · %2× real time").arg(step).arg(st.pace, 0, 'f', 2);
     step_->setText(step);
     step_->setToolTip(behind ? tr("The computer cannot take the steps as fast as they happen: "
