@@ -7,8 +7,10 @@
 #include "Picking.h"
 #include "RenderOptions.h"
 #include "SheetSnapshot.h"
+#include "SimulationStatus.h"
 #include "World.h"
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QMessageBox>
 #include <functional>
@@ -44,6 +46,8 @@ class MainWindow : public QMainWindow {
     // QSettings key: true once the first-run hint was dismissed.
     static constexpr const char* kHintSetting = "hints/firstRunDone";
     static constexpr const char* kThreadsSetting = "solver/threads";
+    // How often the live numbers (step time, stretch, fps) are redrawn at most.
+    static constexpr int kReadoutMs = 250;
     // The cores that step the sheet unless the user chose: all but one, which the view
     // needs (ui/README.md, "Cores for the step": on two cores, stepping on both while
     // the view drew made a 50k-spring sheet's steps 1.3-1.6 times slower).
@@ -144,6 +148,9 @@ class MainWindow : public QMainWindow {
     std::uint64_t savedHash_ = 0, lastHash_ = 0;
     SimParams savedParams_;
     bool firstSnapshot_ = true;
+    // The readouts as last shown, and when (onSnapshot).
+    SimulationStatus readoutShown_;
+    QElapsedTimer readoutClock_;
     // Set when the simulation replaced its World (New, Open, Reset): the next frame
     // drawn hands the freed heap back to the system.
     bool releasePending_ = false;
