@@ -868,6 +868,12 @@ class TestEditor : public QObject {
         QTest::keyClick(steps, Qt::Key_Return);
         QCOMPARE(steps->value(), steps->minimum());
         QCOMPARE(window->params().dt, 1.0 / steps->minimum());
+        // Past the maximum, the maximum (QSpinBox refused the last keystroke: a user's
+        // 8000 became 800).
+        steps->selectAll();
+        QTest::keyClicks(steps, QStringLiteral("8000"));
+        QTest::keyClick(steps, Qt::Key_Return);
+        QCOMPARE(steps->value(), steps->maximum());
     }
 
     // The first-run hint shows until the first thing done in the view, and not again.

@@ -1,5 +1,6 @@
 #include "SolverPanel.h"
 
+#include "ClampingSpinBox.h"
 #include "Integrator.h"
 #include "Material.h"
 #include "SimulationThread.h"
@@ -28,15 +29,15 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
     for (const auto& name : materialNames())
         material_->addItem(QString::fromStdString(name), QString::fromStdString(name));
     iterationsLabel_ = new QLabel(this);
-    iterations_ = new QSpinBox(this);
+    iterations_ = new ClampingSpinBox(this);
     iterations_->setRange(0, 50);
     dtLabel_ = new QLabel(this);
-    stepsPerSecond_ = new QSpinBox(this);
+    stepsPerSecond_ = new ClampingSpinBox(this);
     stepsPerSecond_->setRange(60, 7680);
     stepsPerSecond_->setSingleStep(60);
     gravityOutside_ = new QCheckBox(this);
     threadsLabel_ = new QLabel(this);
-    threads_ = new QSpinBox(this);
+    threads_ = new ClampingSpinBox(this);
     threads_->setRange(1, WorkerPool::machineThreads());
     threads_->setValue(WorkerPool::machineThreads());
     stepTimeLabel_ = new QLabel(this);
