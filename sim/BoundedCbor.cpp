@@ -34,13 +34,13 @@ class BoundedReader {
     // input data".
     QString readerProblem() {
         const QCborError e = reader_.lastError();
-        if (e == QCborError::EndOfFile && reader_.currentOffset() == 0)
-            return QStringLiteral("the file is empty");
+        if (e == QCborError::EndOfFile && size_ == 0) return QStringLiteral("the file is empty");
         // (The reader's offset is where the value that ran out began, not the end.)
         if (e == QCborError::EndOfFile)
-            return QStringLiteral("the file ends after %1 bytes, in the middle of its data: "
-                                  "it was cut short (an interrupted copy or download?)")
-                .arg(size_);
+            return QStringLiteral("the file ends after %1 %2, in the middle of its data: it "
+                                  "was cut short (an interrupted copy or download?)")
+                .arg(size_)
+                .arg(size_ == 1 ? QStringLiteral("byte") : QStringLiteral("bytes"));
         return QStringLiteral("not a valid CBOR file at byte %1: %2")
             .arg(reader_.currentOffset())
             .arg(e.toString());

@@ -585,6 +585,9 @@ class TestSheetFile : public QObject {
         QVERIFY2(half.contains(QStringLiteral("cut short")), qPrintable(half));
         QVERIFY2(half.contains(QStringLiteral("after %1 bytes").arg(halfFile.size())),
                  qPrintable(half));
+        // Cut inside its first value, it is not empty.
+        const QString first = decodeWorld(good.left(1)).error;
+        QVERIFY2(first.contains(QStringLiteral("after 1 byte,")), qPrintable(first));
     }
 
     void bitFlipsNeverCrash() {

@@ -746,7 +746,7 @@
     <name>pf::SolverPanel</name>
     <message>
         <source>tissue</source>
-        <translation>薄葉紙</translation>
+        <translation>ティッシュ</translation>
     </message>
     <message>
         <source>office</source>

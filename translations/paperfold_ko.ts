@@ -746,7 +746,7 @@
     <name>pf::SolverPanel</name>
     <message>
         <source>tissue</source>
-        <translation>얇은 종이</translation>
+        <translation>티슈</translation>
     </message>
     <message>
         <source>office</source>
@@ -853,7 +853,7 @@
     </message>
     <message>
         <source>The computer cannot take the steps as fast as they happen: the sheet moves slower than in real time. Fewer steps per second (Solver dock), a smaller sheet or another integrator are faster.</source>
-        <translation>컴퓨터가 시간에 맞춰 스텝을 계산하지 못합니다. 종이가 실시간보다 느리게 움직입니다. 초당 스텝 수를 줄이거나(솔버 패널), 더 작은 종이나 다른 적분기를 쓰면 빨라집니다.</translation>
+        <translation>컴퓨터가 시간에 맞춰 스텝을 계산하지 못합니다. 종이가 실시간보다 느리게 움직입니다. 초당 단계 수를 줄이거나(솔버 패널), 더 작은 종이나 다른 적분기를 쓰면 빨라집니다.</translation>
     </message>
     <message>
         <source>%1 fps</source>

@@ -115,6 +115,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     panel_->setToolRadius(input_->toolRadius());
 
     connect(sim_.get(), &SimulationThread::snapshotReady, this, &MainWindow::onSnapshot);
+    readoutLater_ = new QTimer(this);
+    readoutLater_->setSingleShot(true);
+    connect(readoutLater_, &QTimer::timeout, this, [this] { showReadouts(sim_->status()); });
     // After New/Open the crumpled sheet, its snapshots and the renderer's buffers for it
     // are freed, but glibc keeps the freed pages in its arenas (the simulation thread's
     // and the GUI's): give them back once the new sheet's first frame is drawn.
@@ -609,14 +612,21 @@ void MainWindow::onSnapshot() {
                          st.breaksLastSecond != was.breaksLastSecond ||
                          st.resting() != was.resting() || st.playing != was.playing ||
                          st.folding != was.folding || st.threads != was.threads;
-    if (changed || !readoutClock_.isValid() || readoutClock_.elapsed() >= kReadoutMs) {
-        readout_->show(st);
-        solver_->showStatus(st);
-        readoutShown_ = st;
-        readoutClock_.start();
-    }
+    if (changed || !readoutClock_.isValid() || readoutClock_.elapsed() >= kReadoutMs)
+        showReadouts(st);
+    else if (!readoutLater_->isActive())
+        // The last snapshot before a pause or a quiet spell is shown too, a little later.
+        readoutLater_->start(std::max(0, kReadoutMs - int(readoutClock_.elapsed())));
     setFoldUnderWay(st.folding);
     updateTitle();
+}
+
+void MainWindow::showReadouts(const SimulationStatus& st) {
+    readoutLater_->stop();
+    readout_->show(st);
+    solver_->showStatus(st);
+    readoutShown_ = st;
+    readoutClock_.start();
 }
 
 void MainWindow::setFoldUnderWay(bool folding) {

@@ -24,6 +24,8 @@ class QToolBar;
 class QUndoStack;
 class QUndoView;
 
+class QTimer;
+
 namespace pf {
 
 class ChartBrowser;
@@ -135,6 +137,7 @@ class MainWindow : public QMainWindow {
     QString scene_ = QStringLiteral("press");
     bool foldUnderWay_ = false;
     void setFoldUnderWay(bool folding);
+    void showReadouts(const SimulationStatus& st);
     // Undo, Redo and the history enabled as the stack allows, unless a fold is under way.
     void gateUndo();
     // What the status bar says to a fold: that it began, or why it was refused.
@@ -151,6 +154,7 @@ class MainWindow : public QMainWindow {
     // The readouts as last shown, and when (onSnapshot).
     SimulationStatus readoutShown_;
     QElapsedTimer readoutClock_;
+    QTimer* readoutLater_ = nullptr; // shows a snapshot's numbers the throttle held back
     // Set when the simulation replaced its World (New, Open, Reset): the next frame
     // drawn hands the freed heap back to the system.
     bool releasePending_ = false;

@@ -150,7 +150,9 @@ ParameterPanel::SliderRow ParameterPanel::addSliderRow(QGridLayout* grid, int ro
 
 bool ParameterPanel::eventFilter(QObject* watched, QEvent* event) {
     if (qobject_cast<QSlider*>(watched)) {
-        if (event->type() == QEvent::MouseButtonPress) {
+        // (The second press of a double click comes as a double click, and repeats too.)
+        if (event->type() == QEvent::MouseButtonPress ||
+            event->type() == QEvent::MouseButtonDblClick) {
             mouseOnSlider_ = true;
             ++drag_;
         } else if (event->type() == QEvent::MouseButtonRelease) {

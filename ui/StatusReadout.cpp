@@ -32,8 +32,9 @@ bool StatusReadout::eventFilter(QObject* watched, QEvent* event) {
 void StatusReadout::makeRoomForTheMessage() {
     const QString message = bar_->currentMessage();
     bar_->setToolTip(message);
-    // The margins QStatusBar keeps round the message and between its widgets.
-    constexpr int kMargins = 24;
+    // The margins QStatusBar keeps round the message (6 px before it, 2 px after), its
+    // layout's spacing on each side of the spacer, and the size grip: about 34 px.
+    constexpr int kMargins = 40;
     const int needed = bar_->fontMetrics().horizontalAdvance(message) + kMargins;
     const bool fits =
         message.isEmpty() || needed + counts_->sizeHint().width() <= bar_->contentsRect().width();
