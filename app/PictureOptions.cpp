@@ -37,10 +37,10 @@ PictureSetup pictureFromOptions(const QCommandLineParser& parser) {
             p.width = wh[0].toInt(&okW);
             p.height = wh[1].toInt(&okH);
         }
-        if (!okW || !okH || p.width < 16 || p.height < 16 ||
-            p.width > OffscreenRenderer::kMaxSize || p.height > OffscreenRenderer::kMaxSize)
+        if (!okW || !okH || !OffscreenRenderer::sizeAllowed(p.width, p.height))
             throw UsageError{
-                QStringLiteral("--size: expected WxH with each side 16-%1, e.g. 1920x1080")
+                QStringLiteral("--size: expected WxH with each side %1-%2, e.g. 1920x1080")
+                    .arg(OffscreenRenderer::kMinSize)
                     .arg(OffscreenRenderer::kMaxSize)};
     }
     p.options.subdivision =

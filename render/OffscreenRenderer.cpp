@@ -8,11 +8,12 @@ namespace pf {
 
 std::unique_ptr<OffscreenRenderer> OffscreenRenderer::create(int width, int height,
                                                              QString* error) {
-    if (width < 16 || height < 16 || width > kMaxSize || height > kMaxSize) {
+    if (!sizeAllowed(width, height)) {
         if (error)
-            *error = QStringLiteral("image size %1x%2 is outside 16..%3")
+            *error = QStringLiteral("image size %1x%2 is outside %3..%4")
                          .arg(width)
                          .arg(height)
+                         .arg(kMinSize)
                          .arg(kMaxSize);
         return nullptr;
     }

@@ -12,7 +12,12 @@ namespace pf {
 // framebuffer, and the same SheetRenderer the editor uses.
 class OffscreenRenderer {
   public:
+    static constexpr int kMinSize = 16;
     static constexpr int kMaxSize = 8192;
+    // Whether it renders an image of that size (each side kMinSize..kMaxSize).
+    static constexpr bool sizeAllowed(int width, int height) {
+        return width >= kMinSize && height >= kMinSize && width <= kMaxSize && height <= kMaxSize;
+    }
 
     static std::unique_ptr<OffscreenRenderer> create(int width, int height, QString* error);
     ~OffscreenRenderer();

@@ -813,17 +813,14 @@ void MainWindow::exportImage() {
     if (!snap) return;
     // A size out of range is said and asked again (a user's 0x0 ended the export, which
     // had to be started over), until one fits or the dialog is cancelled.
-    const int most = OffscreenRenderer::kMaxSize;
     QSize size;
     for (;;) {
         size = chooseImageSize();
         if (!size.isValid()) return; // cancelled
-        if (size.width() >= 16 && size.height() >= 16 && size.width() <= most &&
-            size.height() <= most)
-            break;
+        if (OffscreenRenderer::sizeAllowed(size.width(), size.height())) break;
         showError(tr("The image size is width x height, each from 16 to %1 pixels, such as "
                      "1920x1080.")
-                      .arg(most));
+                      .arg(OffscreenRenderer::kMaxSize));
     }
     const QString path = chooseFileToWrite(FileDialog::ExportImage);
     if (path.isEmpty()) return;

@@ -20,11 +20,10 @@ class QAction;
 class QActionGroup;
 class QDockWidget;
 class QMenu;
+class QTimer;
 class QToolBar;
 class QUndoStack;
 class QUndoView;
-
-class QTimer;
 
 namespace pf {
 

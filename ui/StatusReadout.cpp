@@ -27,8 +27,7 @@ bool StatusReadout::eventFilter(QObject* watched, QEvent* event) {
 // The status bar draws a message only left of its permanent widgets and cuts it off
 // there: at 800 pixels "The fold opened 61° again…" lost its second half, which says
 // what to do. The counts give way while such a message shows and come back when it
-// goes; a message that does not fit even then can be read
-// whole as the bar's tooltip.
+// goes; a message that does not fit even then can be read whole as the bar's tooltip.
 void StatusReadout::makeRoomForTheMessage() {
     const QString message = bar_->currentMessage();
     bar_->setToolTip(message);
