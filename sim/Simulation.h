@@ -69,6 +69,7 @@ class Simulation {
     int lastHinges() const { return lastHinges_; }
     // True while the integrator lets a sheet at rest sleep (costs almost nothing).
     bool asleep() const { return integrator_->asleep(); }
+    const Integrator& integrator() const { return *integrator_; }
 
   private:
     World world_;

@@ -502,7 +502,7 @@ void XpbdIntegrator::bendImplicitly(Sheet& sheet, const Vec3& g, double h) {
 // One sparse solve reaches across the sheet, where a Gauss-Seidel pass moves a pull
 // one edge: near a clamp or under the tool's grip the sub-steps alone left 1-3 %
 // stretch. Compressed edges are left to the buckling cap of the sub-steps.
-void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations) {
+void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, bool damped) {
     auto& V = sheet.verts;
     const Index nv = V.size();
     for (int iteration = 0; iteration < iterations; ++iteration) {
@@ -558,15 +558,18 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations) {
         }
         // A triangle mesh has more edges than its vertices have free directions where
         // pins hold it, so J W Jᵀ is singular there: a small diagonal term (a
-        // compliance) keeps the solve well posed.
+        // compliance) keeps the solve well posed, and a larger one damps the step
+        // (kDampedProjectionCompliance).
+        const double compliance = damped ? kDampedProjectionCompliance : kProjectionCompliance;
         for (std::size_t e = 0; e < active_.size(); ++e) {
             const StretchConstraint& k = stretch_[active_[e]];
             entries.emplace_back(static_cast<Index>(e), static_cast<Index>(e),
-                                 kProjectionCompliance * (w_[k.a] + w_[k.b]));
+                                 compliance * (w_[k.a] + w_[k.b]));
         }
         Eigen::SparseMatrix<double> a(na, na);
         a.setFromTriplets(entries.begin(), entries.end());
         projection_.compute(a);
+        ++projectionWork_.newtonIterations;
         if (projection_.info() != Eigen::Success) return;
         const Eigen::VectorXd lambda = projection_.solve(c);
         // The Newton step, halved while it more than doubles the worst stretch: on the
@@ -914,7 +917,14 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             if (w_[i] != 0.0) V.v[i] = (V.x[i] - xPrev_[i]) / h;
     }
 
-    projectStretch(sheet, params.dt, kProjectionIterations);
+    // The damped projection where the paper hangs from pins that stand still or from the
+    // hand (kDampedProjectionCompliance); pins that carry it (the Fold tool's flap,
+    // `compress`'s edges) keep the undamped one.
+    bool pinsStill = true;
+    for (Index i = 0; i < nv && pinsStill; ++i)
+        pinsStill = !V.pinned[i] || i == hand || V.v[i] == Vec3::Zero();
+    projectStretch(sheet, params.dt, kProjectionIterations,
+                   pins > 0 && pinsStill && mat.stretchStiffness >= kDampedProjectionStiffness);
     collideSphere(sp.center, sp.center, false);
     collideGround(false);
     const bool onlyTheDesk =
