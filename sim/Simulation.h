@@ -69,6 +69,8 @@ class Simulation {
     int lastHinges() const { return lastHinges_; }
     // True while the integrator lets a sheet at rest sleep (costs almost nothing).
     bool asleep() const { return integrator_->asleep(); }
+    // The integrator stepping the sheet, to read what it measures (a step that fails makes
+    // a new one, whose counts start again).
     const Integrator& integrator() const { return *integrator_; }
 
   private:

@@ -502,7 +502,7 @@ void XpbdIntegrator::bendImplicitly(Sheet& sheet, const Vec3& g, double h) {
 // One sparse solve reaches across the sheet, where a Gauss-Seidel pass moves a pull
 // one edge: near a clamp or under the tool's grip the sub-steps alone left 1-3 %
 // stretch. Compressed edges are left to the buckling cap of the sub-steps.
-void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, bool damped) {
+void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, double compliance) {
     auto& V = sheet.verts;
     const Index nv = V.size();
     for (int iteration = 0; iteration < iterations; ++iteration) {
@@ -560,7 +560,6 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, boo
         // pins hold it, so J W Jᵀ is singular there: a small diagonal term (a
         // compliance) keeps the solve well posed, and a larger one damps the step
         // (kDampedProjectionCompliance).
-        const double compliance = damped ? kDampedProjectionCompliance : kProjectionCompliance;
         for (std::size_t e = 0; e < active_.size(); ++e) {
             const StretchConstraint& k = stretch_[active_[e]];
             entries.emplace_back(static_cast<Index>(e), static_cast<Index>(e),
@@ -569,8 +568,8 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, boo
         Eigen::SparseMatrix<double> a(na, na);
         a.setFromTriplets(entries.begin(), entries.end());
         projection_.compute(a);
-        ++projectionWork_.newtonIterations;
         if (projection_.info() != Eigen::Success) return;
+        ++projectionWork_.newtonIterations;
         const Eigen::VectorXd lambda = projection_.solve(c);
         // The Newton step, halved while it more than doubles the worst stretch: on the
         // slivers breaks insert along a fold, J W Jᵀ is nearly singular and the full
@@ -917,14 +916,20 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             if (w_[i] != 0.0) V.v[i] = (V.x[i] - xPrev_[i]) / h;
     }
 
-    // The damped projection where the paper hangs from pins that stand still or from the
-    // hand (kDampedProjectionCompliance); pins that carry it (the Fold tool's flap,
-    // `compress`'s edges) keep the undamped one.
+    // The projection is damped (kDampedProjectionCompliance) where paper hangs from what
+    // holds it: pinned or held by the hand (`pins` counts the hand's vertex too), every
+    // pin standing still in this step, and the tool not in the paper. Pins that carry the
+    // paper (the Fold tool's flap, `compress`'s edges, while they move) and the tool keep
+    // the undamped step, whose overshoot their scenes' breaks and folds were measured
+    // with. It reads only what a saved sheet keeps, so a loaded sheet resumes exactly.
     bool pinsStill = true;
     for (Index i = 0; i < nv && pinsStill; ++i)
         pinsStill = !V.pinned[i] || i == hand || V.v[i] == Vec3::Zero();
+    const bool toolInThePaper = (sp.active && !toolTriangles_.empty()) || !grips.empty();
+    const bool hanging = pins > 0 && pinsStill && !toolInThePaper &&
+                         mat.stretchStiffness >= kDampedProjectionStiffness;
     projectStretch(sheet, params.dt, kProjectionIterations,
-                   pins > 0 && pinsStill && mat.stretchStiffness >= kDampedProjectionStiffness);
+                   hanging ? kDampedProjectionCompliance : kProjectionCompliance);
     collideSphere(sp.center, sp.center, false);
     collideGround(false);
     const bool onlyTheDesk =

@@ -54,25 +54,21 @@ inline constexpr double kProjectedStretch = 3e-3;
 inline constexpr int kMaxProjectedDegree = 64;
 inline constexpr double kProjectionCompliance = 1e-3;
 // Where paper (a material at least as stiff as kDampedProjectionStiffness) hangs from
-// pins that stand still or from the hand, the compliance is this instead, and it damps
-// the Newton step (Levenberg-Marquardt). A triangle mesh has more edges than free
-// directions, so J W Jᵀ is nearly singular wherever the sheet is flat, and the undamped
-// step overshot along those directions: each Newton iteration left the worst stretch at
-// a median 0.64 of what it was, a corner held up by the hand took 2.6 iterations a step,
-// a drape at resolution 30 took 3.5 and one at 40 up to 16 (all it may), each with its
-// own ordering and factorisation. At 0.02 both held sheets take about one
-// (test_paper_behaviour; docs/speed.md has the times); 0.01 left the held corner at two.
-// Where it applies is measured in docs/speed.md: damped, a free sheet in `press` made no
-// break under the tool (its few breaks ride on the overshoot), and pins that carry the
-// paper (the Fold tool's flap, `compress`'s edges) changed what they fold and crush.
-// Before those gates, 0.03 and 0.05 raised the scorecard's largest RMS stretch in
-// `compress` from 0.071 % to 0.078 and 0.089 % (0.1 % allowed), 0.02 did not.
+// pins that stand still or from the hand, with the tool out of it, the compliance is this
+// instead, and it damps the Newton step (Levenberg-Marquardt). A triangle mesh has more
+// edges than free directions, so J W Jᵀ is nearly singular wherever the sheet is flat,
+// and the undamped step overshot along those directions: each Newton iteration left the
+// worst stretch at a median 0.64 of what it was, a corner held up by the hand took 2.6
+// iterations a step, a drape at resolution 30 took 3.5 and one at 40 up to 16 (all it
+// may), each with its own ordering and factorisation. At 0.02 both held sheets take
+// about one (test_paper_behaviour). docs/speed.md has the times, the values tried and
+// why the damping is kept out of free sheets, the tool and pins that move.
 inline constexpr double kDampedProjectionCompliance = 0.02;
-// The damped projection is for paper. A material this soft or softer (E·t, N/m; tissue
-// is 5·10⁴) keeps the undamped one: at E·t = 100 N/m, 4,000 times softer than office
-// paper, the stability map's hanging sheet blew up damped at all 12 of the resolutions
-// and steps around the map's cell (6 of 12 undamped), and at 1,000 N/m at 3 (2
-// undamped); at 10⁴ and 5·10⁴ N/m at none either way.
+// The damped projection is for paper: a material softer than this (E·t, N/m; tissue is
+// 5·10⁴) keeps the undamped one. Damped at 0.03, the stability map's hanging sheet at
+// 100 N/m blew up at all 12 of the resolutions and steps around the map's cell (6 of 12
+// undamped), at 1,000 N/m at 3 (2 undamped); at 10⁴ and 5·10⁴ N/m, damped at 0.02,
+// at none (docs/speed.md).
 inline constexpr double kDampedProjectionStiffness = 1e4;
 // Newton iterations of the projection (it stops once the worst stretch is
 // kProjectedStretch). Where pins or the tool's grip hold the paper the tension between
@@ -118,8 +114,8 @@ class XpbdIntegrator final : public Integrator {
     bool resolvesContacts() const override { return true; }
     void setContacts(const ContactScene& scene) override { contacts_ = scene; }
     bool asleep() const override { return asleep_; }
-    // The fast projection's work since this integrator was made: Newton iterations, each
-    // with its own ordering, factorisation and solve.
+    // The fast projection's work since this integrator was made: Newton iterations that
+    // factored their system (each with its own ordering, factorisation and solve).
     struct ProjectionWork {
         std::int64_t newtonIterations = 0;
     };
@@ -156,7 +152,7 @@ class XpbdIntegrator final : public Integrator {
     void colourStretchConstraints(Index vertices);
     void bendImplicitly(Sheet& sheet, const Vec3& g, double h);
     void yieldPlastically(Sheet& sheet, const Material& m);
-    void projectStretch(Sheet& sheet, double dt, int iterations, bool damped);
+    void projectStretch(Sheet& sheet, double dt, int iterations, double compliance);
     double worstProjectedStretch(const Sheet& sheet) const;
     bool mustWake(const Sheet& sheet) const;
 

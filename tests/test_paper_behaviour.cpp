@@ -15,7 +15,9 @@
 
 #include <QTest>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <optional>
 
 using namespace pf;
 
@@ -163,10 +165,10 @@ class TestPaperBehaviour : public QObject {
         QVERIFY2(worstRms <= 0.001, qPrintable(QString::number(worstRms)));
     }
 
-    // Where pins or a hand hold the paper up, the fast projection must bring the stretch
-    // back under 0.3 % in about one Newton iteration a step. Undamped on the nearly
-    // singular J W Jᵀ of a flat triangle mesh it took 3.5 in the drape and 2.6 for the
-    // held corner (kDampedProjectionCompliance).
+    // Where pins or a hand hold the paper up, the fast projection must keep the stretch
+    // within half of issue 9's 1 % in about one Newton iteration a step. Undamped on the
+    // nearly singular J W Jᵀ of a flat triangle mesh it took 3.5 in the drape and 2.6 for
+    // the held corner (kDampedProjectionCompliance).
     void aHeldSheetIsProjectedInAboutOneNewtonIteration_data() {
         QTest::addColumn<QString>("held");
         QTest::newRow("drape, resolution 30, from two pins") << QStringLiteral("pins");
@@ -191,23 +193,24 @@ class TestPaperBehaviour : public QObject {
         if (held == "hand") s.grab(corner, true, true);
         const auto work = [&] {
             const auto* xpbd = dynamic_cast<const XpbdIntegrator*>(&s.simulation().integrator());
-            return xpbd ? xpbd->projectionWork() : XpbdIntegrator::ProjectionWork{};
+            return xpbd ? xpbd->projectionWork().newtonIterations : -1;
         };
+        QVERIFY(work() >= 0); // the default integrator, xpbd
         // The first second lifts (or swings); the second is measured.
         double worst = 0.0;
-        XpbdIntegrator::ProjectionWork before;
-        for (int frame = 0; frame < 120; ++frame) {
+        std::int64_t before = 0;
+        constexpr int kFrames = 120, kStepsPerFrame = 4; // 2 s at 240 steps a second
+        for (int frame = 0; frame < kFrames; ++frame) {
             if (held == "hand") s.grab(lifted, true, false);
-            s.advance(4);
-            if (frame == 59) before = work();
+            QCOMPARE(s.advance(kStepsPerFrame), StepStatus::Ok);
+            if (frame == kFrames / 2 - 1) before = work();
             if (frame >= 60) worst = std::max(worst, computeStats(s.world().sheet).maxStretch);
         }
-        const XpbdIntegrator::ProjectionWork after = work();
-        const double steps = 240.0;
-        const double newton = (after.newtonIterations - before.newtonIterations) / steps;
+        const double newton = double(work() - before) / (kFrames / 2 * kStepsPerFrame);
         qInfo("per step: %.2f Newton iterations; largest stretch %.3f %%", newton, 100 * worst);
         QVERIFY2(worst <= 0.005, qPrintable(QString::number(worst)));
-        QVERIFY2(newton > 0.0, "the projection never ran: nothing held the sheet up");
+        // The sub-steps alone leave it stretched more than the projection allows.
+        QVERIFY2(newton > 0.0, "the projection never ran");
         QVERIFY2(newton <= 2.0, qPrintable(QString::number(newton)));
     }
 
