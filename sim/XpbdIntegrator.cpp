@@ -608,10 +608,20 @@ double XpbdIntegrator::worstProjectedStretch(const Sheet& sheet) const {
     return worst;
 }
 
+namespace {
+
+// Whether a pinned vertex other than `except` moves in this step.
+bool aPinMoves(const Vertices& V, Index except) {
+    for (Index i = 0; i < V.size(); ++i)
+        if (V.pinned[i] && i != except && V.v[i] != Vec3::Zero()) return true;
+    return false;
+}
+
+} // namespace
+
 bool XpbdIntegrator::mustWake(const Sheet& sheet) const {
     const auto& V = sheet.verts;
-    for (Index i = 0; i < V.size(); ++i)
-        if (V.pinned[i] && V.v[i] != Vec3::Zero()) return true;
+    if (aPinMoves(V, kNone)) return true;
     const SphereTool& sp = contacts_.sphere;
     if (!sp.active || sp.velocity.squaredNorm() == 0.0) return false;
     const double reach = sp.radius + kToolReach + 0.01;
@@ -922,11 +932,8 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // paper (the Fold tool's flap, `compress`'s edges, while they move) and the tool keep
     // the undamped step, whose overshoot their scenes' breaks and folds were measured
     // with. It reads only what a saved sheet keeps, so a loaded sheet resumes exactly.
-    bool pinsStill = true;
-    for (Index i = 0; i < nv && pinsStill; ++i)
-        pinsStill = !V.pinned[i] || i == hand || V.v[i] == Vec3::Zero();
     const bool toolInThePaper = (sp.active && !toolTriangles_.empty()) || !grips.empty();
-    const bool hanging = pins > 0 && pinsStill && !toolInThePaper &&
+    const bool hanging = pins > 0 && !aPinMoves(V, hand) && !toolInThePaper &&
                          mat.stretchStiffness >= kDampedProjectionStiffness;
     projectStretch(sheet, params.dt, kProjectionIterations,
                    hanging ? kDampedProjectionCompliance : kProjectionCompliance);
