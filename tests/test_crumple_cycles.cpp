@@ -6,6 +6,7 @@
 #include "CrumpleCycles.h"
 #include "Normals.h"
 #include "Scenes.h"
+#include "SheetStats.h"
 #include "Simulation.h"
 #include "TestSheets.h"
 
@@ -130,6 +131,37 @@ class TestCrumpleCycles : public QObject {
             QVERIFY(r.fit.b > 0.0);
             QVERIFY2(r.fit.r2 > 0.9, qPrintable(QString::number(r.fit.r2)));
             QVERIFY(!r.segments.empty());
+        }
+    }
+
+    void theFirstCycleStaysWithinTheStretchBound() {
+        // Issue 9's bound, in every step of the first gather, squeeze, pull and hold with
+        // office paper (`xpbd`, the default). The sub-steps leave up to 68 % stretch on
+        // the light vertices of a gathered sheet's creases, and the projection used to
+        // end on it: it gave up after 16 Newton iterations while the stretch was still
+        // 14 %, kept a damped iteration that crawled 4 % an iteration, or ended above the
+        // best state it had reached; and a break's relaxation stopped after 32 sweeps
+        // with 1.4 % left. Over seeds 1-3 the worst step read 1.69 %, 3.19 % and
+        // 1.05 % then (docs/speed.md).
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
+        for (const std::uint64_t seed : {1, 2, 3}) {
+            SceneOptions o;
+            o.seed = seed;
+            Simulation sim(*makeScene("crumple-cycles", o));
+            QCOMPARE(sim.world().params.integrator, std::string("xpbd"));
+            double worst = 0.0, worstRms = 0.0;
+            while (sim.world().time < kCrumpleCycleSeconds - 1e-9) {
+                QCOMPARE(sim.step(), StepStatus::Ok);
+                const SheetStats st = computeStats(sim.world().sheet);
+                worst = std::max(worst, st.maxStretch);
+                worstRms = std::max(worstRms, st.rmsStretch);
+            }
+            qInfo("seed %d: largest stretch %.3f %%, largest RMS stretch %.4f %%, %d breaks",
+                  int(seed), 100.0 * worst, 100.0 * worstRms,
+                  int(computeStats(sim.world().sheet).breaks));
+            QVERIFY(computeStats(sim.world().sheet).breaks > 0); // it did crumple
+            QVERIFY2(worst <= 0.01, qPrintable(QString::number(100.0 * worst)));
+            QVERIFY2(worstRms <= 0.001, qPrintable(QString::number(100.0 * worstRms)));
         }
     }
 };
