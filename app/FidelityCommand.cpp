@@ -12,7 +12,8 @@ namespace pf::cli {
 int runFidelity(const QStringList& arguments) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
-        "Check the sheet against physics: stretch in every scene, free fall in four "
+        "Check the sheet against physics: stretch in press, drape, compress, drop and "
+        "push strokes, free fall in four "
         "orientations, momentum, Peirce's cantilever, Coulomb's incline, contact in press "
         "and rest. Prints one table (value, bound, pass/fail); exit 3 if a check fails."));
     parser.addHelpOption();

@@ -11,9 +11,9 @@ namespace pf {
 // sheared cannot give all four new edges their rest lengths by placing n alone (breakEdge
 // shares the excess among them), and the step after it measured 3-20 % stretch there
 // while a second fold crossed the first. Stretched structural edges that touch a new
-// vertex or one of its neighbours are shortened to their rest lengths by Gauss-Seidel
-// sweeps that move only those vertices (the paper beyond them, and pins, stay), so what
-// is left spreads over one ring of the crease instead of one edge. Velocities stay: the
+// vertex or the two rings of vertices round it are shortened to their rest lengths by
+// Gauss-Seidel sweeps that move only those vertices (the paper beyond them, and pins,
+// stay), so what is left spreads over the crease's rings instead of one edge. Velocities stay: the
 // move is the settling a real crease does within the step. Vertices from `firstNew` on
 // are the new ones; returns the vertices it may have moved.
 std::vector<Index> relaxAroundNewVertices(Sheet& sheet, Index firstNew);

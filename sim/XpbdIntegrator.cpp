@@ -515,7 +515,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
             V.v = bestV_;
         }
     };
-    for (int iteration = 0; iteration < kProjectionIterationsPastTheBound; ++iteration) {
+    for (int iteration = 0; iteration < kMaxProjectionIterations; ++iteration) {
         active_.clear();
         for (std::size_t q = 0; q < stretch_.size(); ++q) {
             const StretchConstraint& k = stretch_[q];
@@ -536,7 +536,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
             bestV_ = V.v;
         }
         // Past `iterations` the projection goes on only while the stretch is over issue
-        // 9's bound (kProjectionIterationsPastTheBound says why).
+        // 9's bound (kMaxProjectionIterations says why).
         if (iteration >= iterations && !(worst > kStretchBound)) {
             endAtTheBest();
             return;
@@ -601,7 +601,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
         // The Newton step, halved while it more than doubles the worst stretch: on the
         // slivers breaks insert along a fold, J W Jᵀ is nearly singular and the full
         // step diverged (a second fold's stretch went 69 %, 229 %, 366 % in three
-        // iterations). If no shorter step holds, the projection ends where it is. A
+        // iterations). If no shorter step holds, the projection ends (at its best state). A
         // step that merely fails to shrink the worst is kept: requiring that made the
         // soft (×1) drape of the stability map blow up at h = 1/7680 s.
         projectedFrom_ = V.x;

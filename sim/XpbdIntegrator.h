@@ -41,7 +41,8 @@ inline constexpr int kSubstepsPerBendingSolve = 4;
 // sub-steps may leave before it runs, and its compliance relative to the constraints'
 // inverse masses (a triangle mesh held by pins has more edges than free directions).
 // A Newton step of the projection that multiplies the worst stretch by more than this
-// diverges: it is halved, up to kProjectionHalvings times before the projection stops.
+// diverges: it is halved, up to kProjectionHalvings times before the projection stops
+// (at the least stretched state it reached).
 inline constexpr double kProjectionDivergence = 2.0;
 inline constexpr int kProjectionHalvings = 4;
 inline constexpr double kProjectedStretch = 3e-3;
@@ -60,7 +61,7 @@ inline constexpr double kProjectionCompliance = 1e-3;
 // and the undamped step overshot along those directions: each Newton iteration left the
 // worst stretch at a median 0.64 of what it was, a corner held up by the hand took 2.6
 // iterations a step, a drape at resolution 30 took 3.5 and one at 40 up to 16 (all it
-// may), each with its own ordering and factorisation. At 0.02 both held sheets take
+// then might), each with its own ordering and factorisation. At 0.02 both held sheets take
 // about one (test_paper_behaviour). docs/speed.md has the times, the values tried and
 // why the damping is kept out of free sheets, the tool and pins that move.
 inline constexpr double kDampedProjectionCompliance = 0.02;
@@ -84,13 +85,14 @@ inline constexpr int kDampedIterationsBeforeFallback = 3;
 // iterations left it 4.7 %, it takes 6-13). A free sheet once kept four, but at the
 // let-go of a second fold across a first the slivers its breaks inserted (0.5 mg
 // vertices) jumped to 52 % stretch and stayed 2-28 % for many steps (2.2 % two seconds
-// later); sixteen leave at most 0.3 %, and a settled sheet stops after one.
+// later); sixteen left those at most 0.3 %, and a settled sheet stops after one.
 inline constexpr int kProjectionIterations = 16;
 // Past kProjectionIterations the projection goes on, up to this many in all, while the
-// worst stretch is over the bound paper must keep (issue 9: 1 %): where crumple-cycles
-// gathers the sheet its sub-steps left up to 68 % on a crease's light vertices, and one
-// step ended its sixteenth iteration at 14 % (seed 2 at 7.85 s).
-inline constexpr int kProjectionIterationsPastTheBound = 48;
+// worst stretch is over the bound paper must keep (issue 9: 1 %, kStretchBound): where
+// crumple-cycles gathers the sheet its sub-steps left up to 68 % on a crease's light
+// vertices, and one step ended its sixteenth iteration at 14 % (seed 2 at 7.85 s).
+inline constexpr int kMaxProjectionIterations = 48;
+static_assert(kProjectionIterations <= kMaxProjectionIterations);
 inline constexpr double kStretchBound = 0.01;
 // An edge shorter than its rest length by more than this has buckled (the sub-steps
 // cap its push at the buckling load) and is left out of the projection; every other
