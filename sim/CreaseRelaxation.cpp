@@ -6,7 +6,7 @@ namespace {
 
 // Sweeps, forward and back, and the stretch below which the paper round a new crease
 // counts as settled (the fast projection's target is 0.3 %). Each sweep moves a pull one
-// edge, and at 32 a break in a gathered sheet kept 1.4-1.7 % (5.2 % before it); it stops
+// edge, and at 32 a break in a gathered sheet kept 1.4-1.7 % (from 5.2 %); it stops
 // as soon as the paper has settled.
 constexpr int kRelaxationSweeps = 512;
 constexpr double kSettledStretch = 1e-4;
