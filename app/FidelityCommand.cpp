@@ -12,14 +12,14 @@ namespace pf::cli {
 int runFidelity(const QStringList& arguments) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
-        "Check the sheet against physics: stretch in press, drape, compress, drop and "
-        "push strokes, free fall in four "
+        "Check the sheet against physics: stretch in press, drape, compress, drop, "
+        "crumple-cycles and push strokes, free fall in four "
         "orientations, momentum, Peirce's cantilever, Coulomb's incline, contact in press "
         "and rest. Prints one table (value, bound, pass/fail); exit 3 if a check fails."));
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("fidelity"), QStringLiteral("The subcommand."));
     parser.addOptions({
-        {QStringLiteral("quick"), QStringLiteral("Shorter runs (for CI).")},
+        {QStringLiteral("quick"), QStringLiteral("Shorter runs, one crumple cycle (for CI).")},
         {QStringLiteral("integrator"), QStringLiteral("Integrator to check (default xpbd)."),
          QStringLiteral("name"), QStringLiteral("xpbd")},
         {QStringLiteral("material"),

@@ -105,11 +105,11 @@ void pressChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
                     settled < 0.0 ? 1e9 : settled, 1.0, true, "s"});
 }
 
-void stretchCheck(const FidelityOptions& o, const std::string& scene,
+void stretchCheck(const FidelityOptions& o, const std::string& scene, double seconds,
                   std::vector<FidelityRow>& rows) {
     Simulation sim(configured(*makeScene(scene), o));
     StretchRun r;
-    const int steps = stepsFor(sim.world(), o.quick ? 1.5 : 5.0);
+    const int steps = stepsFor(sim.world(), seconds);
     for (int k = 0; k < steps && sim.step() == StepStatus::Ok; ++k) {
         const SheetStats st = computeStats(sim.world().sheet);
         r.maxStretch = std::max(r.maxStretch, st.maxStretch);
@@ -349,7 +349,13 @@ std::vector<FidelityRow> runFidelity(const FidelityOptions& o) {
     std::vector<FidelityRow> rows;
     pressChecks(o, rows);
     strokeChecks(o, rows);
-    for (const char* scene : {"drape", "compress", "drop"}) stretchCheck(o, scene, rows);
+    for (const char* scene : {"drape", "compress", "drop"})
+        stretchCheck(o, scene, o.quick ? 1.5 : 5.0, rows);
+    // Its gathered creases carry the lightest vertices of any scene, where the
+    // sub-steps leave the most for the projection: its first cycle broke the stretch
+    // bound while every scene above kept it, and one seed's later cycles broke it
+    // again. So the full card runs all ten cycles; --quick the first.
+    stretchCheck(o, "crumple-cycles", (o.quick ? 1 : kCrumpleCycles) * kCrumpleCycleSeconds, rows);
     for (const char* orientation : {"flat", "tilted 45°", "hanging", "crumpled"})
         freeFallCheck(o, orientation, rows);
     momentumCheck(o, rows);
