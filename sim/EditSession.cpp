@@ -605,7 +605,10 @@ StepStatus EditSession::advance(int steps) {
             return status;
         }
         if (folding() && w.time >= foldRelease_) finishFold(true);
-        if (const auto turned = foldWatch_.check(w.sheet, w.time)) foldTurnedBack_ = turned;
+        if (const auto reading = foldWatch_.check(w.sheet, w.time)) {
+            foldTurnedBack_ = reading->turnedBack;
+            if (reading->stayed > 0.0) foldLeftBehind_ = reading->stayed;
+        }
     }
     return StepStatus::Ok;
 }
@@ -664,10 +667,15 @@ void EditSession::freeze() {
 void EditSession::forgetFoldWatch() {
     foldWatch_.cancel();
     foldTurnedBack_.reset();
+    foldLeftBehind_.reset();
 }
 
 std::optional<double> EditSession::takeFoldTurnedBack() {
     return std::exchange(foldTurnedBack_, std::nullopt);
+}
+
+std::optional<double> EditSession::takeFoldLeftBehind() {
+    return std::exchange(foldLeftBehind_, std::nullopt);
 }
 
 std::optional<EditSession::StrokeEnd> EditSession::takeFinished() {
@@ -691,6 +699,10 @@ FoldRefusal EditSession::fold(const FoldRequest& request) {
     for (const PinGroup& g : plan.motions) setPins(g.vertices, true);
     foldRelease_ = plan.release;
     foldAngle_ = request.angle;
+    foldLeftOut_.vertices = std::move(plan.leftOut);
+    foldLeftOut_.atStart.clear();
+    for (Index i : foldLeftOut_.vertices)
+        foldLeftOut_.atStart.push_back(sim_.world().sheet.verts.x[i]);
     auto& groups = sim_.world().script.pins;
     foldGroup_ = groups.size();
     for (PinGroup& g : plan.motions) groups.push_back(std::move(g));
@@ -710,6 +722,7 @@ void EditSession::adoptFoldUnderWay() {
             foldGroup_ == g ? groups[g].release : std::max(foldRelease_, groups[g].release);
     }
     foldAngle_ = std::numbers::pi; // not known: the widest reading (FoldWatch)
+    foldLeftOut_ = {};             // nor where the paper left out lay when it began
     if (folding()) beginStroke();
 }
 
@@ -722,7 +735,7 @@ void EditSession::finishFold(bool letGo) {
             if (groups[g].turnRate != 0.0) { // the carry: the flap
                 foldWatch_.start(sim_.world().sheet, groups[g].vertices,
                                  groups[g].turnRate > 0.0 ? groups[g].axis : Vec3(-groups[g].axis),
-                                 foldAngle_, sim_.world().time);
+                                 foldAngle_, sim_.world().time, std::move(foldLeftOut_));
                 break;
             }
     auto& pinned = sim_.world().sheet.verts.pinned;

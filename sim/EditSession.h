@@ -143,6 +143,11 @@ class EditSession {
     // first. A flap that turned back more than kSprangBack did not keep its crease.
     std::optional<double> takeFoldTurnedBack();
     static constexpr double kSprangBack = 45.0; // degrees
+    // At the same time, the share of the paper on the flap's side that the carry did not
+    // hold and that stayed where it lay (FoldWatch::Reading::stayed), once, if some did;
+    // kLeftBehind of it is a fold that left part of the paper behind.
+    std::optional<double> takeFoldLeftBehind();
+    static constexpr double kLeftBehind = 0.1;
 
     // Undo recovers (§4.2), newest first, every break and hinge since the stroke began —
     // its own and those the sheet made settling after it — and, when all came back, gives
@@ -292,10 +297,11 @@ class EditSession {
     // Ends the fold under way once its flap is let go (or a step failed): an undo step.
     void finishFold(bool letGo);
     // The fold's flap, watched for a second after its let-go, and what the watch read
-    // (takeFoldTurnedBack); forgotten by any other edit.
+    // (takeFoldTurnedBack, takeFoldLeftBehind); forgotten by any other edit.
     FoldWatch foldWatch_;
-    std::optional<double> foldTurnedBack_;
-    double foldAngle_ = 0.0; // the angle the fold under way was asked for, radians
+    std::optional<double> foldTurnedBack_, foldLeftBehind_;
+    double foldAngle_ = 0.0;         // the angle the fold under way was asked for, radians
+    FoldWatch::LeftOut foldLeftOut_; // what the carry of the fold under way does not hold
     void forgetFoldWatch();
     // Takes a sheet's pin groups still to be let go as the fold under way.
     void adoptFoldUnderWay();

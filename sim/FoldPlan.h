@@ -47,6 +47,10 @@ struct FoldPlan {
     // let go at `release`.
     std::vector<PinGroup> motions;
     double release = 0.0;
+    // The paper on the flap's side, beyond the band, that the carry does not hold: off
+    // the plane along the line (the upper or lower layers of a folded stack, a first
+    // crease's loop). It goes round only if the paper it hangs on takes it (FoldWatch).
+    std::vector<Index> leftOut;
 };
 
 // The carry turns at this rate: a half turn in 1.5 s, as a hand folds a sheet.

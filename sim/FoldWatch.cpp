@@ -14,11 +14,41 @@ constexpr double kReadableSpread = 0.002; // m
 // under it); readings are taken up to this far past it.
 constexpr double kClosingRoom = 30.0; // degrees
 
+// The turn about `axis` (degrees, right-handed) that best carries the offsets of `from`
+// about their centroid to those of the same vertices now, across the axis: the
+// least-squares angle, atan2(Σ n·(p × q), Σ p·q). Nothing if they spread too little
+// across the axis to tell, or a vertex is gone.
+std::optional<double> turnAbout(const Vec3& axis, const std::vector<Index>& vertices,
+                                const std::vector<Vec3>& from, const Sheet& sheet) {
+    if (vertices.empty()) return std::nullopt;
+    Vec3 was = Vec3::Zero(), now = Vec3::Zero();
+    for (std::size_t k = 0; k < vertices.size(); ++k) {
+        // Breaks only add vertices; what renumbers them (an undo) cancels the watch.
+        if (vertices[k] >= sheet.verts.size()) return std::nullopt;
+        was += from[k];
+        now += sheet.verts.x[vertices[k]];
+    }
+    was /= static_cast<double>(vertices.size());
+    now /= static_cast<double>(vertices.size());
+    const auto across = [&](const Vec3& d) { return Vec3(d - d.dot(axis) * axis); };
+    double sine = 0.0, cosine = 0.0, spread = 0.0;
+    for (std::size_t k = 0; k < vertices.size(); ++k) {
+        const Vec3 p = across(from[k] - was), q = across(sheet.verts.x[vertices[k]] - now);
+        sine += axis.dot(p.cross(q));
+        cosine += p.dot(q);
+        spread += p.squaredNorm();
+    }
+    if (spread < static_cast<double>(vertices.size()) * kReadableSpread * kReadableSpread)
+        return std::nullopt;
+    return std::atan2(sine, cosine) * 180.0 / std::numbers::pi;
+}
+
 } // namespace
 
 void FoldWatch::start(const Sheet& sheet, std::vector<Index> flap, const Vec3& carried,
-                      double angle, double time) {
+                      double angle, double time, LeftOut left) {
     flap_ = std::move(flap);
+    left_ = std::move(left);
     carried_ = carried.normalized();
     angle_ = angle;
     letGo_.clear();
@@ -26,37 +56,32 @@ void FoldWatch::start(const Sheet& sheet, std::vector<Index> flap, const Vec3& c
     due_ = time + kSeconds;
 }
 
-std::optional<double> FoldWatch::check(const Sheet& sheet, double time) {
+std::optional<FoldWatch::Reading> FoldWatch::check(const Sheet& sheet, double time) {
     if (flap_.empty() || time < due_) return std::nullopt;
     const std::vector<Index> flap = std::exchange(flap_, {}); // read once
-    Vec3 from = Vec3::Zero(), to = Vec3::Zero();
-    for (std::size_t k = 0; k < flap.size(); ++k) {
-        // Breaks only add vertices; what renumbers them (an undo) cancels the watch.
-        if (flap[k] >= sheet.verts.size()) return std::nullopt;
-        from += letGo_[k];
-        to += sheet.verts.x[flap[k]];
-    }
-    from /= static_cast<double>(flap.size());
-    to /= static_cast<double>(flap.size());
-    // The turn about the carry's axis that best carries the offsets across it: the
-    // least-squares angle, atan2(Σ n·(p × q), Σ p·q).
-    const auto across = [&](const Vec3& d) { return Vec3(d - d.dot(carried_) * carried_); };
-    double sine = 0.0, cosine = 0.0, spread = 0.0;
-    for (std::size_t k = 0; k < flap.size(); ++k) {
-        const Vec3 p = across(letGo_[k] - from), q = across(sheet.verts.x[flap[k]] - to);
-        sine += carried_.dot(p.cross(q));
-        cosine += p.dot(q);
-        spread += p.squaredNorm();
-    }
-    if (spread < static_cast<double>(flap.size()) * kReadableSpread * kReadableSpread)
-        return std::nullopt;
-    double back = -std::atan2(sine, cosine) * 180.0 / std::numbers::pi;
+    const LeftOut left = std::exchange(left_, {});
+    for (Index i : flap)
+        if (i >= sheet.verts.size()) return std::nullopt;
     // A fold let go at `angle` can turn back at most that far (to flat), and close on
     // only a little: a turn near a half turn is read within those bounds.
-    const double most = angle_ * 180.0 / std::numbers::pi + kClosingRoom;
-    while (back > most) back -= 360.0;
-    while (back <= most - 360.0) back += 360.0;
-    return back;
+    const double folded = angle_ * 180.0 / std::numbers::pi;
+    const double most = folded + kClosingRoom;
+    const auto within = [&](double degrees) {
+        while (degrees > most) degrees -= 360.0;
+        while (degrees <= most - 360.0) degrees += 360.0;
+        return degrees;
+    };
+    Reading reading;
+    if (const auto turn = turnAbout(carried_, flap, letGo_, sheet))
+        reading.turnedBack = within(-*turn);
+    // What the carry left out went the way of the fold, or it stayed: a flap's turn since
+    // the fold began is the fold's angle, read within the same bounds.
+    if (const auto turn = turnAbout(carried_, left.vertices, left.atStart, sheet);
+        turn && within(*turn) < 0.5 * folded)
+        reading.stayed = static_cast<double>(left.vertices.size()) /
+                         static_cast<double>(left.vertices.size() + flap.size());
+    if (!reading.turnedBack && reading.stayed == 0.0) return std::nullopt;
+    return reading;
 }
 
 } // namespace pf

@@ -9,28 +9,52 @@ namespace pf {
 
 // How far a fold's flap turns back once it is let go: the status bar used to say "the
 // crease keeps it" at every let-go, while a third fold along the diagonal of a sheet
-// folded twice sprang back 99° within a second.
+// folded twice sprang back 99° within a second. And whether the paper on the flap's
+// side that the carry did not hold went with it: the carry holds only paper lying in
+// the plane along the line (FoldPlan), so of a stack folded twice a third fold across
+// it carried the upper layers over and left the lower ones lying flat, while the
+// status bar said "Folded.".
 class FoldWatch {
   public:
     // The flap lets go at `time`; it is read again this long after.
     static constexpr double kSeconds = 1.0;
 
+    // The paper on the flap's side that the carry does not hold, and where it was when
+    // the fold began.
+    struct LeftOut {
+        std::vector<Index> vertices;
+        std::vector<Vec3> atStart;
+    };
+
+    struct Reading {
+        // How far the flap has turned back about the carry's axis since it was let go, in
+        // degrees (negative: on, further closed; the turn that best carries its vertices'
+        // offsets across the axis), in (angle − 360° + 30°, angle + 30°]. Nothing for a
+        // flap that has no width across the axis (a single row of vertices along the
+        // line), whose turn cannot be read from its own vertices.
+        std::optional<double> turnedBack;
+        // The share of the paper on the flap's side (by vertices) that the carry left out
+        // and that did not follow: turned less than half the fold's angle since the fold
+        // began. 0 if it followed or none was left out.
+        double stayed = 0.0;
+    };
+
     // `carried`: the axis the carry turned the flap about (right-handed, the way it went);
     // `angle`: the angle it was folded to (radians), which bounds how far it can turn back.
     void start(const Sheet& sheet, std::vector<Index> flap, const Vec3& carried, double angle,
-               double time);
+               double time, LeftOut left = {});
     // Another edit came first (the sheet it watched may be gone).
-    void cancel() { flap_.clear(); }
-    // Once kSeconds have passed: how far the flap has turned back about the carry's axis
-    // since it was let go, in degrees (negative: on, further closed; the turn that best
-    // carries its vertices' offsets across the axis), in (angle − 360° + 30°, angle +
-    // 30°]; read once. Nothing for a flap that has no width across the axis (a single
-    // row of vertices along the line), whose turn cannot be read from its own vertices.
-    std::optional<double> check(const Sheet& sheet, double time);
+    void cancel() {
+        flap_.clear();
+        left_ = {};
+    }
+    // Once kSeconds have passed, read once; nothing if there is nothing to read.
+    std::optional<Reading> check(const Sheet& sheet, double time);
 
   private:
     std::vector<Index> flap_;
     std::vector<Vec3> letGo_;
+    LeftOut left_;
     Vec3 carried_ = Vec3::UnitX();
     double angle_ = 0.0;
     double due_ = 0.0;

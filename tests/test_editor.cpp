@@ -1798,6 +1798,16 @@ class TestEditor : public QObject {
             qPrintable(window->statusBar()->currentMessage()));
     }
 
+    // A fold that carried part of a stack over and left the rest lying says so (the
+    // session's reading is tested in test_fold_tool; here, what the window makes of it).
+    void aFoldThatLeftPaperBehindSaysSo() {
+        emit window->simulation()->foldLeftPaperBehind(0.41);
+        const QString message = window->statusBar()->currentMessage();
+        QVERIFY2(message.startsWith(QStringLiteral("Only part of the paper folded: 41 %")),
+                 qPrintable(message));
+        QVERIFY(message.contains(QStringLiteral("Undo")));
+    }
+
     // A click with the Fold tool draws no line: it is refused with the reason, and
     // nothing changes.
     void aFoldThatCannotBeMadeSaysWhy() {

@@ -620,6 +620,10 @@
         <source>The fold opened %1° again after it was let go: its crease did not hold the flap. Edit ▸ Undo unfolds the paper.</source>
         <translation>Die Faltung hat sich nach dem Loslassen wieder um %1° geöffnet: Ihr Knick hat die Lasche nicht gehalten. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
     </message>
+    <message>
+        <source>Only part of the paper folded: %1 % of it on the flap&apos;s side stayed where it lay. The fold carries the paper that lies flat along the line, not layers above or below it. Edit ▸ Undo unfolds the paper.</source>
+        <translation>Nur ein Teil des Papiers wurde gefaltet: %1 % davon auf der Seite der Lasche blieb liegen. Die Faltung nimmt das Papier mit, das entlang der Linie flach liegt, nicht die Lagen darüber oder darunter. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -615,6 +615,10 @@
         <source>The fold opened %1° again after it was let go: its crease did not hold the flap. Edit ▸ Undo unfolds the paper.</source>
         <translation>離した後、折りが %1° 開きました：折り目がフラップを保てませんでした。編集 ▸ 元に戻す で紙を開きます。</translation>
     </message>
+    <message>
+        <source>Only part of the paper folded: %1 % of it on the flap&apos;s side stayed where it lay. The fold carries the paper that lies flat along the line, not layers above or below it. Edit ▸ Undo unfolds the paper.</source>
+        <translation>紙の一部だけが折られました：フラップ側の %1 % はそのまま残りました。折りは線に沿って平らに置かれた紙を運び、その上下の層は運びません。編集 ▸ 元に戻す で紙を開きます。</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -157,6 +157,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                 .arg(degrees, 0, 'f', 0),
             10000);
     });
+    // A third fold across a sheet folded twice carried its upper layers over and left the
+    // lower ones lying flat, while the status bar said "Folded.".
+    connect(sim_.get(), &SimulationThread::foldLeftPaperBehind, this, [this](double share) {
+        statusBar()->showMessage(
+            tr("Only part of the paper folded: %1 % of it on the flap's side stayed where it "
+               "lay. The fold carries the paper that lies flat along the line, not layers "
+               "above or below it. Edit ▸ Undo unfolds the paper.")
+                .arg(100.0 * share, 0, 'f', 0),
+            10000);
+    });
     connect(sim_.get(), &SimulationThread::settled, this, [this](int stroke) {
         undo_->push(new StrokeCommand(sim_.get(), stroke, 0,
                                       static_cast<int>(EditSession::StrokeKind::Settle)));

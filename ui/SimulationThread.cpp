@@ -48,6 +48,7 @@ void SimulationThread::forwardWorkerSignals() {
     forward(&SimulationWorker::settled, &SimulationThread::settled);
     forward(&SimulationWorker::foldAnswered, &SimulationThread::foldAnswered);
     forward(&SimulationWorker::foldSprangBack, &SimulationThread::foldSprangBack);
+    forward(&SimulationWorker::foldLeftPaperBehind, &SimulationThread::foldLeftPaperBehind);
     forward(&SimulationWorker::worldReplaced, &SimulationThread::worldReplaced);
     forward(&SimulationWorker::diverged, &SimulationThread::diverged);
 }

@@ -122,9 +122,12 @@ void SimulationWorker::advance(int steps) {
         else
             announce(finished); // a fold that was let go
     }
-    if (const auto turned = session_.takeFoldTurnedBack();
-        turned && *turned > EditSession::kSprangBack)
+    const auto turned = session_.takeFoldTurnedBack();
+    const auto left = session_.takeFoldLeftBehind();
+    if (turned && *turned > EditSession::kSprangBack)
         emit foldSprangBack(*turned);
+    else if (left && *left >= EditSession::kLeftBehind)
+        emit foldLeftPaperBehind(*left);
     if (status == StepStatus::Ok) return;
     playing_ = false;
     emit diverged(session_.world().stepCount);

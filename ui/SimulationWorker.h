@@ -58,6 +58,7 @@ class SimulationWorker : public QObject {
     void settled(int stroke);       // a Settle froze the sheet: an undo step
     void foldAnswered(int refusal); // a FoldRefusal
     void foldSprangBack(double degrees);
+    void foldLeftPaperBehind(double share);
     void worldReplaced();
     void diverged(qint64 step);
 
