@@ -700,6 +700,7 @@ FoldRefusal EditSession::fold(const FoldRequest& request) {
     foldRelease_ = plan.release;
     foldAngle_ = request.angle;
     foldLeftOut_.vertices = std::move(plan.leftOut);
+    foldLeftOut_.pivot = plan.pivot;
     foldLeftOut_.atStart.clear();
     for (Index i : foldLeftOut_.vertices)
         foldLeftOut_.atStart.push_back(sim_.world().sheet.verts.x[i]);
@@ -752,6 +753,7 @@ void EditSession::finishFold(bool letGo) {
     // as a sheet saved mid-fold and resumed without the editor does.)
     if (held) sim_.world().sheet.paper.wake();
     foldGroup_ = kNoFold;
+    foldLeftOut_ = {}; // watched now, or not at all (a step failed)
     finished_ = endStroke(StrokeKind::Fold);
 }
 

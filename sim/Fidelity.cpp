@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace pf {
@@ -71,7 +72,11 @@ void pressChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
     const double radius = w.sphere.radius;
     const int steps = stepsFor(w, end);
     for (int k = 0; k < steps; ++k) {
-        if (sim.step() != StepStatus::Ok) break;
+        if (sim.step() != StepStatus::Ok) { // blown up: a failed row, not a short run
+            stretch.maxStretch = stretch.maxRms = std::numeric_limits<double>::infinity();
+            settled = -1.0;
+            break;
+        }
         const Sheet& s = sim.world().sheet;
         const SheetStats st = computeStats(s);
         stretch.maxStretch = std::max(stretch.maxStretch, st.maxStretch);
@@ -110,7 +115,13 @@ void stretchCheck(const FidelityOptions& o, const std::string& scene, double sec
     Simulation sim(configured(*makeScene(scene), o));
     StretchRun r;
     const int steps = stepsFor(sim.world(), seconds);
-    for (int k = 0; k < steps && sim.step() == StepStatus::Ok; ++k) {
+    for (int k = 0; k < steps; ++k) {
+        // A step that blew up fails the rows rather than ending them at what came before
+        // (crumple-cycles runs 30 s on paper at the edge of its bound).
+        if (sim.step() != StepStatus::Ok) {
+            r.maxStretch = r.maxRms = std::numeric_limits<double>::infinity();
+            break;
+        }
         const SheetStats st = computeStats(sim.world().sheet);
         r.maxStretch = std::max(r.maxStretch, st.maxStretch);
         r.maxRms = std::max(r.maxRms, st.rmsStretch);
@@ -322,7 +333,10 @@ void strokeChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
         if (move.norm() > limit) move *= limit / move.norm();
         w.sphere.center += move;
         w.sphere.velocity = move / w.params.dt;
-        if (sim.step() != StepStatus::Ok) break;
+        if (sim.step() != StepStatus::Ok) { // blown up: a failed row, not a short run
+            stretch.maxStretch = stretch.maxRms = std::numeric_limits<double>::infinity();
+            break;
+        }
         const SheetStats st = computeStats(sim.world().sheet);
         stretch.maxStretch = std::max(stretch.maxStretch, st.maxStretch);
         stretch.maxRms = std::max(stretch.maxRms, st.rmsStretch);

@@ -127,6 +127,7 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
     for (Index i = 0; i < V.size(); ++i)
         if (beyond(i, 1.0) > kFoldBand && !V.pinned[i] && !holdable(i, 1.0))
             plan.leftOut.push_back(i);
+    plan.pivot = onPaper;
     // Turning about side·axis carries the flap toward the front (axis × across = front).
     carry.axis = toward * side * axis;
     // The flap lands on the rest this far off the paper's plane: above the highest paper

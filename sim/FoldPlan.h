@@ -51,6 +51,8 @@ struct FoldPlan {
     // the plane along the line (the upper or lower layers of a folded stack, a first
     // crease's loop). It goes round only if the paper it hangs on takes it (FoldWatch).
     std::vector<Index> leftOut;
+    // A point of the line the flap turns about, in the paper's plane there.
+    Vec3 pivot = Vec3::Zero();
 };
 
 // The carry turns at this rate: a half turn in 1.5 s, as a hand folds a sheet.

@@ -17,14 +17,12 @@ constexpr double kClosingRoom = 30.0; // degrees
 // The turn about `axis` (degrees, right-handed) that best carries the offsets of `from`
 // about their centroid to those of the same vertices now, across the axis: the
 // least-squares angle, atan2(Σ n·(p × q), Σ p·q). Nothing if they spread too little
-// across the axis to tell, or a vertex is gone.
+// across the axis to tell.
 std::optional<double> turnAbout(const Vec3& axis, const std::vector<Index>& vertices,
                                 const std::vector<Vec3>& from, const Sheet& sheet) {
     if (vertices.empty()) return std::nullopt;
     Vec3 was = Vec3::Zero(), now = Vec3::Zero();
     for (std::size_t k = 0; k < vertices.size(); ++k) {
-        // Breaks only add vertices; what renumbers them (an undo) cancels the watch.
-        if (vertices[k] >= sheet.verts.size()) return std::nullopt;
         was += from[k];
         now += sheet.verts.x[vertices[k]];
     }
@@ -60,26 +58,42 @@ std::optional<FoldWatch::Reading> FoldWatch::check(const Sheet& sheet, double ti
     if (flap_.empty() || time < due_) return std::nullopt;
     const std::vector<Index> flap = std::exchange(flap_, {}); // read once
     const LeftOut left = std::exchange(left_, {});
-    for (Index i : flap)
-        if (i >= sheet.verts.size()) return std::nullopt;
-    // A fold let go at `angle` can turn back at most that far (to flat), and close on
-    // only a little: a turn near a half turn is read within those bounds.
+    // Vertices are renumbered only by what cancels the watch (an undo); checked all the
+    // same, before any reading, so that a sheet that lost them says nothing at all.
+    for (const std::vector<Index>* group : {&flap, &left.vertices})
+        for (Index i : *group)
+            if (i >= sheet.verts.size()) return std::nullopt;
     const double folded = angle_ * 180.0 / std::numbers::pi;
-    const double most = folded + kClosingRoom;
-    const auto within = [&](double degrees) {
-        while (degrees > most) degrees -= 360.0;
-        while (degrees <= most - 360.0) degrees += 360.0;
+    // Turns in degrees, read into (top − 360°, top].
+    const auto within = [](double degrees, double top) {
+        while (degrees > top) degrees -= 360.0;
+        while (degrees <= top - 360.0) degrees += 360.0;
         return degrees;
     };
     Reading reading;
+    // A fold let go at `angle` can turn back at most that far (to flat), and close on
+    // only a little: a turn near a half turn is read within those bounds.
     if (const auto turn = turnAbout(carried_, flap, letGo_, sheet))
-        reading.turnedBack = within(-*turn);
-    // What the carry left out went the way of the fold, or it stayed: a flap's turn since
-    // the fold began is the fold's angle, read within the same bounds.
-    if (const auto turn = turnAbout(carried_, left.vertices, left.atStart, sheet);
-        turn && within(*turn) < 0.5 * folded)
-        reading.stayed = static_cast<double>(left.vertices.size()) /
-                         static_cast<double>(left.vertices.size() + flap.size());
+        reading.turnedBack = within(-*turn, folded + kClosingRoom);
+    // What the carry left out is read vertex by vertex (of a stack, one layer may go
+    // round and the next stay), each by its turn about the line since the fold began.
+    // The carry took the flap round by a half turn before it opened it back to the
+    // fold's angle, so paper that followed it may lie anywhere up to a half turn (and a
+    // little past); it stayed if it turned less than half the fold's angle.
+    const auto across = [&](const Vec3& x) {
+        const Vec3 d = x - left.pivot;
+        return Vec3(d - d.dot(carried_) * carried_);
+    };
+    std::size_t stayed = 0;
+    for (std::size_t k = 0; k < left.vertices.size(); ++k) {
+        const Vec3 p = across(left.atStart[k]), q = across(sheet.verts.x[left.vertices[k]]);
+        const double turn =
+            std::atan2(carried_.dot(p.cross(q)), p.dot(q)) * 180.0 / std::numbers::pi;
+        if (within(turn, 180.0 + kClosingRoom) < 0.5 * folded) ++stayed;
+    }
+    if (stayed > 0)
+        reading.stayed =
+            static_cast<double>(stayed) / static_cast<double>(left.vertices.size() + flap.size());
     if (!reading.turnedBack && reading.stayed == 0.0) return std::nullopt;
     return reading;
 }

@@ -7,6 +7,14 @@
 
 namespace pf {
 
+// The paper on the flap's side that the carry does not hold, where it was when the
+// fold began, and a point of the line the flap turns about.
+struct FoldLeftOut {
+    std::vector<Index> vertices;
+    std::vector<Vec3> atStart;
+    Vec3 pivot = Vec3::Zero();
+};
+
 // How far a fold's flap turns back once it is let go: the status bar used to say "the
 // crease keeps it" at every let-go, while a third fold along the diagonal of a sheet
 // folded twice sprang back 99° within a second. And whether the paper on the flap's
@@ -19,12 +27,9 @@ class FoldWatch {
     // The flap lets go at `time`; it is read again this long after.
     static constexpr double kSeconds = 1.0;
 
-    // The paper on the flap's side that the carry does not hold, and where it was when
-    // the fold began.
-    struct LeftOut {
-        std::vector<Index> vertices;
-        std::vector<Vec3> atStart;
-    };
+    // (Declared outside the class: a default argument cannot use the initialisers of a
+    // class nested in one not yet complete.)
+    using LeftOut = FoldLeftOut;
 
     struct Reading {
         // How far the flap has turned back about the carry's axis since it was let go, in
@@ -34,8 +39,9 @@ class FoldWatch {
         // line), whose turn cannot be read from its own vertices.
         std::optional<double> turnedBack;
         // The share of the paper on the flap's side (by vertices) that the carry left out
-        // and that did not follow: turned less than half the fold's angle since the fold
-        // began. 0 if it followed or none was left out.
+        // and that did not follow: each such vertex turned about the line by less than
+        // half the fold's angle since the fold began. 0 if all of it followed or none was
+        // left out.
         double stayed = 0.0;
     };
 

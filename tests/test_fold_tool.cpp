@@ -766,13 +766,75 @@ class TestFoldTool : public QObject {
             const auto r = w.check(sheet, 1.0 + FoldWatch::kSeconds);
             return r ? r->stayed : -1.0;
         };
-        // Gone round with the flap, or over half of its half turn: nothing to say.
+        // Read vertex by vertex: the lower layer gone round, the lowest not, is the
+        // lowest's 4 of 12.
+        {
+            carry(lower);
+            FoldWatch w;
+            w.start(sheet, flap, Vec3::UnitX(), kPi, 1.0, leftOut(both));
+            const auto r = w.check(sheet, 1.0 + FoldWatch::kSeconds);
+            QVERIFY(r);
+            QVERIFY2(std::abs(r->stayed - 4.0 / 12.0) < 1e-12,
+                     qPrintable(QString::number(r->stayed)));
+        }
+        // Gone round with the flap, or over half of its half turn: nothing to say. Nor
+        // for a fold to 90°, whose carry took the flap round by a half turn first (the
+        // paper it left out may stay there).
         QCOMPARE(stayedAfter(kPi, kPi), 0.0);
         QCOMPARE(stayedAfter(0.6 * kPi, kPi), 0.0);
+        QCOMPARE(stayedAfter(kPi, 0.5 * kPi), 0.0);
+        QCOMPARE(stayedAfter(0.3 * kPi, 0.5 * kPi), 0.0);
         // A third of the way to a fold to 90°, or the other way (against the carry), it
         // did not follow: 8 of 12 vertices.
         QVERIFY(std::abs(stayedAfter(kPi / 6, 0.5 * kPi) - 8.0 / 12.0) < 1e-12);
         QVERIFY(std::abs(stayedAfter(-kPi / 3, 0.5 * kPi) - 8.0 / 12.0) < 1e-12);
+    }
+
+    void theSessionSaysWhetherTheFoldKeptItsCrease() {
+        // The status bar said "the crease keeps it" at every let-go, also for a third
+        // fold along the diagonal of a sheet folded twice, which sprang back 99°. Now
+        // the session reads the flap a second after the let-go.
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
+        EditSession s = editorSession(true, "xpbd");
+        QCOMPARE(s.fold(acrossTheMiddle()), FoldRefusal::None);
+        runUntilLetGo(s);
+        std::optional<double> back;
+        int steps = 0;
+        for (; steps < 480 && !back; ++steps) {
+            QCOMPARE(s.advance(1), StepStatus::Ok);
+            back = s.takeFoldTurnedBack();
+        }
+        QVERIFY(back);
+        qInfo("a fold across the middle turned back %.1f degrees in the %d steps after its "
+              "let-go",
+              *back, steps);
+        QVERIFY(std::abs(steps / 240.0 - FoldWatch::kSeconds) < 0.01);
+        QVERIFY(std::abs(*back) < 10.0);  // held: it closed a few degrees further
+        QVERIFY(!s.takeFoldTurnedBack()); // said once
+        QVERIFY(!s.takeFoldLeftBehind()); // a flat sheet's fold leaves nothing out
+        // Undone before its second is up, nothing is said of it.
+        QCOMPARE(s.fold({Vec3(0.0, 0.0, -0.2), Vec3(0.0, 0.0, 0.2), kPi, false}),
+                 FoldRefusal::None);
+        runUntilLetGo(s);
+        const auto second = s.takeFinished();
+        QVERIFY(second);
+        QVERIFY(s.undoStroke(second->stroke));
+        for (int k = 0; k < 480; ++k) {
+            QCOMPARE(s.advance(1), StepStatus::Ok);
+            QVERIFY(!s.takeFoldTurnedBack());
+            QVERIFY(!s.takeFoldLeftBehind());
+        }
+        // Nor after a Reset within it: the flat new sheet is no fold that opened.
+        QCOMPARE(s.fold({Vec3(0.0, 0.0, -0.2), Vec3(0.0, 0.0, 0.2), kPi, false}),
+                 FoldRefusal::None);
+        runUntilLetGo(s);
+        QCOMPARE(s.advance(120), StepStatus::Ok);
+        QVERIFY(s.reset(makeEditorScene("press", SceneOptions{}, 0.03)));
+        for (int k = 0; k < 480; ++k) {
+            QCOMPARE(s.advance(1), StepStatus::Ok);
+            QVERIFY(!s.takeFoldTurnedBack());
+            QVERIFY(!s.takeFoldLeftBehind());
+        }
     }
 
     void theSessionSaysWhenTheFoldLeftPaperBehind() {
@@ -798,13 +860,15 @@ class TestFoldTool : public QObject {
                 if (const auto l = s.takeFoldLeftBehind()) left = l;
             }
         };
+        QVERIFY(planFold(s.world(), acrossTheMiddle()).leftOut.empty()); // a flat sheet
         foldAndWait(acrossTheMiddle());
         QVERIFY(turned && !left);
         const FoldRequest second{Vec3(0.0, 0.0, -0.2), Vec3(0.0, 0.0, 0.2), kPi, false};
         QVERIFY(!planFold(s.world(), second).leftOut.empty()); // the first fold's loop
         foldAndWait(second);
         QVERIFY(turned && *turned < EditSession::kSprangBack);
-        QVERIFY2(!left, "the second fold took the first one's loop round");
+        QVERIFY2(!left || *left < EditSession::kLeftBehind,
+                 "the second fold took the first one's loop round");
 
         Vec3 lo = V.x[0], hi = V.x[0];
         for (const Vec3& x : V.x) {
@@ -822,24 +886,25 @@ class TestFoldTool : public QObject {
         qInfo("the third fold carries %zu vertices and leaves %zu out", carried,
               plan.leftOut.size());
         QVERIFY(plan.leftOut.size() > carried / 4); // the stack's other layers
-        const auto leftOutSide = [&] {
-            double side = 0.0;
-            for (Index i : plan.leftOut) side += V.x[i].z() - z;
-            return side / static_cast<double>(plan.leftOut.size());
-        };
-        const double before = leftOutSide();
+        // Still on the flap's side of the line: each left-out vertex by itself.
+        std::vector<double> sideBefore;
+        for (Index i : plan.leftOut) sideBefore.push_back(V.x[i].z() - z);
         foldAndWait(third);
-        const double after = leftOutSide();
-        qInfo("its left-out paper lay %.1f mm off the line, %.1f mm after; turned back %.1f "
-              "degrees; the session says %s",
-              1e3 * before, 1e3 * after, turned ? *turned : 0.0,
+        std::size_t stillThere = 0;
+        for (std::size_t k = 0; k < plan.leftOut.size(); ++k)
+            if (sideBefore[k] * (V.x[plan.leftOut[k]].z() - z) > 0.0) ++stillThere;
+        const double share = double(stillThere) / double(plan.leftOut.size() + carried);
+        qInfo("%zu of its left-out vertices are still on the flap's side (%.2f of that side); "
+              "turned back %.1f degrees; the session says %s",
+              stillThere, share, turned ? *turned : 0.0,
               left ? qPrintable(QString::number(*left)) : "nothing");
         QVERIFY(turned);
-        const bool stayed = before * after > 0.0; // still on the flap's side of the line
-        QCOMPARE(bool(left), stayed);
+        // The watch reads each vertex's turn about the line, this its side of it: the two
+        // agree but for paper near the vertical through the line.
         if (left)
-            QVERIFY(std::abs(*left - double(plan.leftOut.size()) /
-                                         double(plan.leftOut.size() + carried)) < 1e-12);
+            QVERIFY(std::abs(*left - share) < 0.1);
+        else
+            QVERIFY(share < EditSession::kLeftBehind + 0.1);
     }
 
     void undoAllAndRedoAllGivesBackEveryFold() {

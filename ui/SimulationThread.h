@@ -82,8 +82,9 @@ class SimulationThread : public QObject {
     // A second after a fold was let go its flap had turned back this far, past
     // EditSession::kSprangBack: the crease did not keep it.
     void foldSprangBack(double degrees);
-    // At the same time, for a flap that held: this share (0..1) of the paper on the flap's
-    // side, past EditSession::kLeftBehind, was not carried and stayed where it lay.
+    // At the same time, unless the flap sprang back: this share (0..1) of the paper on the
+    // flap's side, at least EditSession::kLeftBehind, was not carried and stayed where it
+    // lay.
     void foldLeftPaperBehind(double share);
     // A replaceWorld was applied: the old World is gone and a snapshot of the new one
     // was published (its snapshotReady comes first).
