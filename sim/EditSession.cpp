@@ -678,6 +678,16 @@ std::optional<double> EditSession::takeFoldLeftBehind() {
     return std::exchange(foldLeftBehind_, std::nullopt);
 }
 
+std::optional<EditSession::FoldNotice> EditSession::foldNotice(std::optional<double> turnedBack,
+                                                               std::optional<double> leftBehind) {
+    // A flap that opened again is the larger news: what it left behind opened with it.
+    if (turnedBack && *turnedBack > kSprangBack)
+        return FoldNotice{FoldNotice::Kind::SprangBack, *turnedBack};
+    if (leftBehind && *leftBehind >= kLeftBehind)
+        return FoldNotice{FoldNotice::Kind::LeftPaperBehind, *leftBehind};
+    return std::nullopt;
+}
+
 std::optional<EditSession::StrokeEnd> EditSession::takeFinished() {
     return std::exchange(finished_, std::nullopt);
 }

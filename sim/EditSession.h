@@ -4,6 +4,7 @@
 #include "FoldWatch.h"
 #include "Simulation.h"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -148,6 +149,15 @@ class EditSession {
     // kLeftBehind of it is a fold that left part of the paper behind.
     std::optional<double> takeFoldLeftBehind();
     static constexpr double kLeftBehind = 0.1;
+    // What a user is told of the fold a second after its let-go, from those two readings:
+    // that it opened again (and how far), else that it left part of the paper behind
+    // (and how much), else nothing.
+    struct FoldNotice {
+        enum class Kind : std::uint8_t { SprangBack, LeftPaperBehind } kind;
+        double value; // degrees turned back, or the share of the flap's side left behind
+    };
+    static std::optional<FoldNotice> foldNotice(std::optional<double> turnedBack,
+                                                std::optional<double> leftBehind);
 
     // Undo recovers (§4.2), newest first, every break and hinge since the stroke began —
     // its own and those the sheet made settling after it — and, when all came back, gives

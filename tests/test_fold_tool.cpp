@@ -837,6 +837,20 @@ class TestFoldTool : public QObject {
         }
     }
 
+    void aFoldThatOpenedIsSaidBeforeWhatItLeftBehind() {
+        using Kind = EditSession::FoldNotice::Kind;
+        const auto notice = EditSession::foldNotice;
+        QVERIFY(!notice(std::nullopt, std::nullopt));
+        QVERIFY(!notice(-3.0, std::nullopt)); // held, nothing left out
+        QVERIFY(!notice(EditSession::kSprangBack, 0.5 * EditSession::kLeftBehind));
+        auto n = notice(120.0, 0.4); // opened, and what it left behind with it
+        QVERIFY(n && n->kind == Kind::SprangBack && n->value == 120.0);
+        n = notice(30.0, EditSession::kLeftBehind); // held, a tenth left lying
+        QVERIFY(n && n->kind == Kind::LeftPaperBehind && n->value == EditSession::kLeftBehind);
+        n = notice(std::nullopt, 0.3); // a flap too narrow to read, paper left lying
+        QVERIFY(n && n->kind == Kind::LeftPaperBehind && n->value == 0.3);
+    }
+
     void theSessionSaysWhenTheFoldLeftPaperBehind() {
         // The editor's sheet folded across the middle, then across that, then across the
         // quarter, 2 s after each let-go as a user waits. The carry holds only the paper

@@ -122,12 +122,13 @@ void SimulationWorker::advance(int steps) {
         else
             announce(finished); // a fold that was let go
     }
-    const auto turned = session_.takeFoldTurnedBack();
-    const auto left = session_.takeFoldLeftBehind();
-    if (turned && *turned > EditSession::kSprangBack)
-        emit foldSprangBack(*turned);
-    else if (left && *left >= EditSession::kLeftBehind)
-        emit foldLeftPaperBehind(*left);
+    if (const auto notice =
+            EditSession::foldNotice(session_.takeFoldTurnedBack(), session_.takeFoldLeftBehind())) {
+        if (notice->kind == EditSession::FoldNotice::Kind::SprangBack)
+            emit foldSprangBack(notice->value);
+        else
+            emit foldLeftPaperBehind(notice->value);
+    }
     if (status == StepStatus::Ok) return;
     playing_ = false;
     emit diverged(session_.world().stepCount);
