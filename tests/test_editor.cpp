@@ -614,10 +614,10 @@ class TestEditor : public QObject {
         QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Pin 1 vertex"));
         QCOMPARE(name(Kind::Pin, 3), QStringLiteral("Pin 3 vertices"));
         QCOMPARE(name(Kind::Unpin, 1), QStringLiteral("Unpin 1 vertex"));
-        QCOMPARE(name(Kind::Push, 1), QStringLiteral("Push (1 break or fold)"));
-        QCOMPARE(name(Kind::Grab, 0), QStringLiteral("Grab (0 breaks or folds)"));
-        QCOMPARE(name(Kind::Fold, 12), QStringLiteral("Fold (12 breaks or folds)"));
-        // A fold that broke nothing is a fold, not "0 breaks or folds".
+        QCOMPARE(name(Kind::Push, 1), QStringLiteral("Push (1 break or hinge)"));
+        QCOMPARE(name(Kind::Grab, 0), QStringLiteral("Grab (0 breaks or hinges)"));
+        QCOMPARE(name(Kind::Fold, 12), QStringLiteral("Fold (12 breaks or hinges)"));
+        // A fold that broke nothing is a fold, not "0 breaks or hinges".
         QCOMPARE(name(Kind::Fold, 0), QStringLiteral("Fold"));
         // The status bar's counts too.
         QStatusBar bar;
@@ -665,13 +665,13 @@ class TestEditor : public QObject {
         };
         QCOMPARE(texts(),
                  QStringList({QStringLiteral("φ ändern"), QStringLiteral("Integrator ändern"),
-                              QStringLiteral("Drücken (3 Brüche oder Falten)")}));
+                              QStringLiteral("Drücken (3 Brüche oder Scharniere)")}));
         QVERIFY(installLanguage(QStringLiteral("en")));
         QTRY_COMPARE(texts(),
                      QStringList({QStringLiteral("Change φ"), QStringLiteral("Change integrator"),
-                                  QStringLiteral("Push (3 breaks or folds)")}));
+                                  QStringLiteral("Push (3 breaks or hinges)")}));
         QVERIFY(installLanguage(QStringLiteral("ja")));
-        QTRY_VERIFY(texts()[2] != QStringLiteral("Push (3 breaks or folds)"));
+        QTRY_VERIFY(texts()[2] != QStringLiteral("Push (3 breaks or hinges)"));
         QVERIFY(installLanguage(QStringLiteral("en")));
     }
 

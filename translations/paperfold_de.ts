@@ -39,10 +39,10 @@
 <context>
     <name>UndoCommands</name>
     <message numerus="yes">
-        <source>Push (%n break(s) or fold(s))</source>
+        <source>Push (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>Drücken (%n Bruch oder Falte)</numerusform>
-            <numerusform>Drücken (%n Brüche oder Falten)</numerusform>
+            <numerusform>Drücken (%n Bruch oder Scharnier)</numerusform>
+            <numerusform>Drücken (%n Brüche oder Scharniere)</numerusform>
         </translation>
     </message>
     <message>
@@ -86,10 +86,10 @@
         <translation>Beruhigen</translation>
     </message>
     <message numerus="yes">
-        <source>Grab (%n break(s) or fold(s))</source>
+        <source>Grab (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>Greifen (%n Bruch oder Falte)</numerusform>
-            <numerusform>Greifen (%n Brüche oder Falten)</numerusform>
+            <numerusform>Greifen (%n Bruch oder Scharnier)</numerusform>
+            <numerusform>Greifen (%n Brüche oder Scharniere)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
@@ -111,10 +111,10 @@
         <translation>Zurücksetzen</translation>
     </message>
     <message numerus="yes">
-        <source>Fold (%n break(s) or fold(s))</source>
+        <source>Fold (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>Falten (%n Bruch oder Falte)</numerusform>
-            <numerusform>Falten (%n Brüche oder Falten)</numerusform>
+            <numerusform>Falten (%n Bruch oder Scharnier)</numerusform>
+            <numerusform>Falten (%n Brüche oder Scharniere)</numerusform>
         </translation>
     </message>
 </context>

@@ -9,17 +9,17 @@
 <context>
     <name>UndoCommands</name>
     <message numerus="yes">
-        <source>Push (%n break(s) or fold(s))</source>
+        <source>Push (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>Push (%n break or fold)</numerusform>
-            <numerusform>Push (%n breaks or folds)</numerusform>
+            <numerusform>Push (%n break or hinge)</numerusform>
+            <numerusform>Push (%n breaks or hinges)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <source>Grab (%n break(s) or fold(s))</source>
+        <source>Grab (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>Grab (%n break or fold)</numerusform>
-            <numerusform>Grab (%n breaks or folds)</numerusform>
+            <numerusform>Grab (%n break or hinge)</numerusform>
+            <numerusform>Grab (%n breaks or hinges)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
@@ -37,10 +37,10 @@
         </translation>
     </message>
     <message numerus="yes">
-        <source>Fold (%n break(s) or fold(s))</source>
+        <source>Fold (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>Fold (%n break or fold)</numerusform>
-            <numerusform>Fold (%n breaks or folds)</numerusform>
+            <numerusform>Fold (%n break or hinge)</numerusform>
+            <numerusform>Fold (%n breaks or hinges)</numerusform>
         </translation>
     </message>
 </context>

@@ -39,9 +39,9 @@
 <context>
     <name>UndoCommands</name>
     <message numerus="yes">
-        <source>Push (%n break(s) or fold(s))</source>
+        <source>Push (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>押し込み（破断・折り目 %n 件）</numerusform>
+            <numerusform>押し込み（破断・ヒンジ %n 件）</numerusform>
         </translation>
     </message>
     <message>
@@ -85,9 +85,9 @@
         <translation>静止</translation>
     </message>
     <message numerus="yes">
-        <source>Grab (%n break(s) or fold(s))</source>
+        <source>Grab (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>つかむ（破断・折り目 %n 件）</numerusform>
+            <numerusform>つかむ（破断・ヒンジ %n 件）</numerusform>
         </translation>
     </message>
     <message numerus="yes">
@@ -107,9 +107,9 @@
         <translation>リセット</translation>
     </message>
     <message numerus="yes">
-        <source>Fold (%n break(s) or fold(s))</source>
+        <source>Fold (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>折る（破断または折り目 %n）</numerusform>
+            <numerusform>折る（破断・ヒンジ %n 件）</numerusform>
         </translation>
     </message>
 </context>

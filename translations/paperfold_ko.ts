@@ -39,9 +39,9 @@
 <context>
     <name>UndoCommands</name>
     <message numerus="yes">
-        <source>Push (%n break(s) or fold(s))</source>
+        <source>Push (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>누르기 (파단 또는 접힘 %n개)</numerusform>
+            <numerusform>누르기 (파단 또는 힌지 %n개)</numerusform>
         </translation>
     </message>
     <message>
@@ -85,9 +85,9 @@
         <translation>안정</translation>
     </message>
     <message numerus="yes">
-        <source>Grab (%n break(s) or fold(s))</source>
+        <source>Grab (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>잡기 (파단 또는 접힘 %n개)</numerusform>
+            <numerusform>잡기 (파단 또는 힌지 %n개)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
@@ -107,9 +107,9 @@
         <translation>초기화</translation>
     </message>
     <message numerus="yes">
-        <source>Fold (%n break(s) or fold(s))</source>
+        <source>Fold (%n break(s) or hinge(s))</source>
         <translation>
-            <numerusform>접기 (파단 또는 접힘 %n개)</numerusform>
+            <numerusform>접기 (파단 또는 힌지 %n개)</numerusform>
         </translation>
     </message>
 </context>

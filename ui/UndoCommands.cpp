@@ -41,11 +41,11 @@ void StrokeCommand::retranslate() {
     // Each text spelled out at its call, where lupdate finds it.
     switch (static_cast<EditSession::StrokeKind>(kind_)) {
     case EditSession::StrokeKind::Push:
-        setText(QCoreApplication::translate("UndoCommands", "Push (%n break(s) or fold(s))",
+        setText(QCoreApplication::translate("UndoCommands", "Push (%n break(s) or hinge(s))",
                                             nullptr, events));
         break;
     case EditSession::StrokeKind::Grab:
-        setText(QCoreApplication::translate("UndoCommands", "Grab (%n break(s) or fold(s))",
+        setText(QCoreApplication::translate("UndoCommands", "Grab (%n break(s) or hinge(s))",
                                             nullptr, events));
         break;
     case EditSession::StrokeKind::Pin:
@@ -63,11 +63,11 @@ void StrokeCommand::retranslate() {
         break;
     case EditSession::StrokeKind::Fold:
         // A fold that kept its crease without a break or a hinge (card bends plastically)
-        // read "Fold (0 breaks or folds)".
+        // read "Fold (0 breaks or folds)" (hinges were called folds then).
         if (events == 0)
             setText(QCoreApplication::translate("UndoCommands", "Fold"));
         else
-            setText(QCoreApplication::translate("UndoCommands", "Fold (%n break(s) or fold(s))",
+            setText(QCoreApplication::translate("UndoCommands", "Fold (%n break(s) or hinge(s))",
                                                 nullptr, events));
         break;
     }
