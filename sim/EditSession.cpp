@@ -607,7 +607,7 @@ StepStatus EditSession::advance(int steps) {
         if (folding() && w.time >= foldRelease_) finishFold(true);
         if (const auto reading = foldWatch_.check(w.sheet, w.time)) {
             foldTurnedBack_ = reading->turnedBack;
-            if (reading->stayed > 0.0) foldLeftBehind_ = reading->stayed;
+            if (reading->unfolded > 0.0) foldLeftBehind_ = reading->unfolded;
         }
     }
     return StepStatus::Ok;

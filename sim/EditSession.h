@@ -145,7 +145,7 @@ class EditSession {
     std::optional<double> takeFoldTurnedBack();
     static constexpr double kSprangBack = 45.0; // degrees
     // At the same time, the share of the paper on the flap's side that the carry did not
-    // hold and that stayed where it lay (FoldWatch::Reading::stayed), once, if some did;
+    // hold and that lies unfolded (FoldWatch::Reading::unfolded), once, if some does;
     // kLeftBehind of it is a fold that left part of the paper behind.
     std::optional<double> takeFoldLeftBehind();
     static constexpr double kLeftBehind = 0.1;

@@ -79,22 +79,22 @@ std::optional<FoldWatch::Reading> FoldWatch::check(const Sheet& sheet, double ti
     // round and the next stay), each by its turn about the line since the fold began.
     // The carry took the flap round by a half turn before it opened it back to the
     // fold's angle, so paper that followed it may lie anywhere up to a half turn (and a
-    // little past); it stayed if it turned less than half the fold's angle.
+    // little past); it lies unfolded if it turned less than half the fold's angle.
     const auto across = [&](const Vec3& x) {
         const Vec3 d = x - left.pivot;
         return Vec3(d - d.dot(carried_) * carried_);
     };
-    std::size_t stayed = 0;
+    std::size_t unfolded = 0;
     for (std::size_t k = 0; k < left.vertices.size(); ++k) {
         const Vec3 p = across(left.atStart[k]), q = across(sheet.verts.x[left.vertices[k]]);
         const double turn =
             std::atan2(carried_.dot(p.cross(q)), p.dot(q)) * 180.0 / std::numbers::pi;
-        if (within(turn, 180.0 + kClosingRoom) < 0.5 * folded) ++stayed;
+        if (within(turn, 180.0 + kClosingRoom) < 0.5 * folded) ++unfolded;
     }
-    if (stayed > 0)
-        reading.stayed =
-            static_cast<double>(stayed) / static_cast<double>(left.vertices.size() + flap.size());
-    if (!reading.turnedBack && reading.stayed == 0.0) return std::nullopt;
+    if (unfolded > 0)
+        reading.unfolded =
+            static_cast<double>(unfolded) / static_cast<double>(left.vertices.size() + flap.size());
+    if (!reading.turnedBack && reading.unfolded == 0.0) return std::nullopt;
     return reading;
 }
 

@@ -39,10 +39,11 @@ class FoldWatch {
         // line), whose turn cannot be read from its own vertices.
         std::optional<double> turnedBack;
         // The share of the paper on the flap's side (by vertices) that the carry left out
-        // and that did not follow: each such vertex turned about the line by less than
-        // half the fold's angle since the fold began. 0 if all of it followed or none was
-        // left out.
-        double stayed = 0.0;
+        // and that lies unfolded: each such vertex turned about the line by less than
+        // half the fold's angle since the fold began. It was never carried round, or it
+        // was dragged round and fell back open at the let-go (an editor session filmed
+        // both). 0 if all of it is folded or none was left out.
+        double unfolded = 0.0;
     };
 
     // `carried`: the axis the carry turned the flap about (right-handed, the way it went);

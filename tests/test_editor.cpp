@@ -1803,7 +1803,7 @@ class TestEditor : public QObject {
     void aFoldThatLeftPaperBehindSaysSo() {
         emit window->simulation()->foldLeftPaperBehind(0.41);
         const QString message = window->statusBar()->currentMessage();
-        QVERIFY2(message.startsWith(QStringLiteral("Only part of the paper folded: 41 %")),
+        QVERIFY2(message.startsWith(QStringLiteral("Only part of the fold held: 41 %")),
                  qPrintable(message));
         QVERIFY(message.contains(QStringLiteral("Undo")));
     }

@@ -702,7 +702,7 @@ class TestFoldTool : public QObject {
             QVERIFY(reading && reading->turnedBack);
             const double back = *reading->turnedBack;
             QVERIFY2(std::abs(back - c.back) < 1e-9, qPrintable(QString::number(back)));
-            QCOMPARE(reading->stayed, 0.0);     // nothing was left out
+            QCOMPARE(reading->unfolded, 0.0);   // nothing was left out
             QVERIFY(!watch.check(sheet, 10.0)); // read once
             sheet.verts.x = letGo;
         }
@@ -754,8 +754,8 @@ class TestFoldTool : public QObject {
         auto reading = watch.check(sheet, 1.0 + FoldWatch::kSeconds);
         QVERIFY(reading && reading->turnedBack);
         QVERIFY(std::abs(*reading->turnedBack) < 1e-9);
-        QVERIFY2(std::abs(reading->stayed - 0.5) < 1e-12,
-                 qPrintable(QString::number(reading->stayed)));
+        QVERIFY2(std::abs(reading->unfolded - 0.5) < 1e-12,
+                 qPrintable(QString::number(reading->unfolded)));
         // Both layers left out, turned about the axis by `turn` since the fold (to
         // `folded`) began: what stayed, or 0 where they followed.
         const auto stayedAfter = [&](double turn, double folded) {
@@ -764,7 +764,7 @@ class TestFoldTool : public QObject {
             FoldWatch w;
             w.start(sheet, flap, Vec3::UnitX(), folded, 1.0, leftOut(both));
             const auto r = w.check(sheet, 1.0 + FoldWatch::kSeconds);
-            return r ? r->stayed : -1.0;
+            return r ? r->unfolded : -1.0;
         };
         // Read vertex by vertex: the lower layer gone round, the lowest not, is the
         // lowest's 4 of 12.
@@ -774,8 +774,8 @@ class TestFoldTool : public QObject {
             w.start(sheet, flap, Vec3::UnitX(), kPi, 1.0, leftOut(both));
             const auto r = w.check(sheet, 1.0 + FoldWatch::kSeconds);
             QVERIFY(r);
-            QVERIFY2(std::abs(r->stayed - 4.0 / 12.0) < 1e-12,
-                     qPrintable(QString::number(r->stayed)));
+            QVERIFY2(std::abs(r->unfolded - 4.0 / 12.0) < 1e-12,
+                     qPrintable(QString::number(r->unfolded)));
         }
         // Gone round with the flap, or over half of its half turn: nothing to say. Nor
         // for a fold to 90°, whose carry took the flap round by a half turn first (the

@@ -621,8 +621,8 @@
         <translation>Die Faltung hat sich nach dem Loslassen wieder um %1° geöffnet: Ihr Knick hat die Lasche nicht gehalten. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
     </message>
     <message>
-        <source>Only part of the paper folded: %1 % of it on the flap&apos;s side stayed where it lay. The fold carries the paper that lies flat along the line, not layers above or below it. Edit ▸ Undo unfolds the paper.</source>
-        <translation>Nur ein Teil des Papiers wurde gefaltet: %1 % davon auf der Seite der Lasche blieb liegen. Die Faltung nimmt das Papier mit, das entlang der Linie flach liegt, nicht die Lagen darüber oder darunter. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
+        <source>Only part of the fold held: %1 % of the paper on the flap&apos;s side lies unfolded. The fold holds the paper that lies flat along the line, not layers above or below it. Edit ▸ Undo unfolds the paper.</source>
+        <translation>Die Faltung hat nur zum Teil gehalten: %1 % des Papiers auf der Seite der Lasche liegt ungefaltet. Die Faltung hält das Papier, das entlang der Linie flach liegt, nicht die Lagen darüber oder darunter. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
     </message>
 </context>
 <context>

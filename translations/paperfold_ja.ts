@@ -616,8 +616,8 @@
         <translation>離した後、折りが %1° 開きました：折り目がフラップを保てませんでした。編集 ▸ 元に戻す で紙を開きます。</translation>
     </message>
     <message>
-        <source>Only part of the paper folded: %1 % of it on the flap&apos;s side stayed where it lay. The fold carries the paper that lies flat along the line, not layers above or below it. Edit ▸ Undo unfolds the paper.</source>
-        <translation>紙の一部だけが折られました：フラップ側の %1 % はそのまま残りました。折りは線に沿って平らに置かれた紙を運び、その上下の層は運びません。編集 ▸ 元に戻す で紙を開きます。</translation>
+        <source>Only part of the fold held: %1 % of the paper on the flap&apos;s side lies unfolded. The fold holds the paper that lies flat along the line, not layers above or below it. Edit ▸ Undo unfolds the paper.</source>
+        <translation>折りは一部しか保たれませんでした：フラップ側の紙の %1 % が折られずに残っています。折りは線に沿って平らに置かれた紙を保ち、その上下の層は保ちません。編集 ▸ 元に戻す で紙を開きます。</translation>
     </message>
 </context>
 <context>

@@ -616,8 +616,8 @@
         <translation>놓은 뒤 접힘이 다시 %1° 열렸습니다: 접힌 자국이 날개를 붙잡지 못했습니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
     </message>
     <message>
-        <source>Only part of the paper folded: %1 % of it on the flap&apos;s side stayed where it lay. The fold carries the paper that lies flat along the line, not layers above or below it. Edit ▸ Undo unfolds the paper.</source>
-        <translation>종이의 일부만 접혔습니다: 날개 쪽의 %1 %는 그 자리에 남았습니다. 접기는 선을 따라 평평하게 놓인 종이를 옮기며, 그 위나 아래의 층은 옮기지 않습니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
+        <source>Only part of the fold held: %1 % of the paper on the flap&apos;s side lies unfolded. The fold holds the paper that lies flat along the line, not layers above or below it. Edit ▸ Undo unfolds the paper.</source>
+        <translation>접힘이 일부만 유지되었습니다: 날개 쪽 종이의 %1 %가 접히지 않은 채 놓여 있습니다. 접기는 선을 따라 평평하게 놓인 종이를 붙잡으며, 그 위나 아래의 층은 붙잡지 않습니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
     </message>
 </context>
 <context>

@@ -158,11 +158,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             10000);
     });
     // A third fold across a sheet folded twice carried its upper layers over and left the
-    // lower ones lying flat, while the status bar said "Folded.".
+    // lower ones lying flat, while the status bar said "Folded."; in an editor session
+    // such layers also went round while carried and fell back open at the let-go.
     connect(sim_.get(), &SimulationThread::foldLeftPaperBehind, this, [this](double share) {
         statusBar()->showMessage(
-            tr("Only part of the paper folded: %1 % of it on the flap's side stayed where it "
-               "lay. The fold carries the paper that lies flat along the line, not layers "
+            tr("Only part of the fold held: %1 % of the paper on the flap's side lies "
+               "unfolded. The fold holds the paper that lies flat along the line, not layers "
                "above or below it. Edit ▸ Undo unfolds the paper.")
                 .arg(100.0 * share, 0, 'f', 0),
             10000);
