@@ -6,6 +6,7 @@
 
 #include <QTextStream>
 #include <algorithm>
+#include <cmath>
 
 namespace pf::cli {
 
@@ -65,8 +66,10 @@ int runFidelity(const QStringList& arguments) {
     for (const FidelityRow& r : rows) {
         failed += r.pass() ? 0 : 1;
         const QString unit = QString::fromStdString(r.unit);
-        const QString value = r.value >= 1e8 ? QStringLiteral("never")
-                                             : QString::number(r.value, 'g', 4) + ' ' + unit;
+        // (A stretch row of a run that blew up is infinite; the rest row's "never" is 1e9.)
+        const QString value = std::isinf(r.value) ? QStringLiteral("blew up")
+                              : r.value >= 1e8    ? QStringLiteral("never")
+                                                  : QString::number(r.value, 'g', 4) + ' ' + unit;
         out << QStringLiteral("%1 %2 %3 %4  %5\n")
                    .arg(QString::fromStdString(r.check), -30)
                    .arg(value, 12)

@@ -607,7 +607,7 @@ StepStatus EditSession::advance(int steps) {
         if (folding() && w.time >= foldRelease_) finishFold(true);
         if (const auto reading = foldWatch_.check(w.sheet, w.time)) {
             foldTurnedBack_ = reading->turnedBack;
-            if (reading->unfolded > 0.0) foldLeftBehind_ = reading->unfolded;
+            if (reading->unfoldedShare > 0.0) foldLeftBehind_ = reading->unfoldedShare;
         }
     }
     return StepStatus::Ok;
@@ -683,7 +683,7 @@ std::optional<EditSession::FoldNotice> EditSession::foldNotice(std::optional<dou
     // A flap that opened again is the larger news: what it left behind opened with it.
     if (turnedBack && *turnedBack > kSprangBack)
         return FoldNotice{FoldNotice::Kind::SprangBack, *turnedBack};
-    if (leftBehind && *leftBehind >= kLeftBehind)
+    if (leftBehind && *leftBehind >= kLeftBehindShare)
         return FoldNotice{FoldNotice::Kind::LeftPaperBehind, *leftBehind};
     return std::nullopt;
 }

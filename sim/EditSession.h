@@ -146,9 +146,11 @@ class EditSession {
     static constexpr double kSprangBack = 45.0; // degrees
     // At the same time, the share of the paper on the flap's side that the carry did not
     // hold and that lies unfolded (FoldWatch::Reading::unfolded), once, if some does;
-    // kLeftBehind of it is a fold that left part of the paper behind.
+    // kLeftBehindShare of it is a fold that left part of the paper behind.
     std::optional<double> takeFoldLeftBehind();
-    static constexpr double kLeftBehind = 0.1;
+    // (Mountain folds of a twice-folded stack, whose left-out layers went round, read
+    // 0-4 %; folds that left layers lying, 25-41 %.)
+    static constexpr double kLeftBehindShare = 0.1;
     // What a user is told of the fold a second after its let-go, from those two readings:
     // that it opened again (and how far), else that it left part of the paper behind
     // (and how much), else nothing.

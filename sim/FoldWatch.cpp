@@ -13,6 +13,8 @@ constexpr double kReadableSpread = 0.002; // m
 // A flap folded to an angle can close on past it only a little (it lies on the paper
 // under it); readings are taken up to this far past it.
 constexpr double kClosingRoom = 30.0; // degrees
+// Paper the carry left out is read up to this far round (see check).
+constexpr double kLeftOutMost = 270.0; // degrees
 
 // The turn about `axis` (degrees, right-handed) that best carries the offsets of `from`
 // about their centroid to those of the same vertices now, across the axis: the
@@ -78,8 +80,11 @@ std::optional<FoldWatch::Reading> FoldWatch::check(const Sheet& sheet, double ti
     // What the carry left out is read vertex by vertex (of a stack, one layer may go
     // round and the next stay), each by its turn about the line since the fold began.
     // The carry took the flap round by a half turn before it opened it back to the
-    // fold's angle, so paper that followed it may lie anywhere up to a half turn (and a
-    // little past); it lies unfolded if it turned less than half the fold's angle.
+    // fold's angle, so paper that followed it may lie anywhere up to a half turn, and past
+    // it by as much as it started under the line's plane (a lower layer, 30-45° under
+    // from the line, ends 210-225° on); it lies unfolded if it turned less than half the
+    // fold's angle. Turned back against the carry by more than a quarter turn is not
+    // what paper left out does.
     const auto across = [&](const Vec3& x) {
         const Vec3 d = x - left.pivot;
         return Vec3(d - d.dot(carried_) * carried_);
@@ -89,12 +94,12 @@ std::optional<FoldWatch::Reading> FoldWatch::check(const Sheet& sheet, double ti
         const Vec3 p = across(left.atStart[k]), q = across(sheet.verts.x[left.vertices[k]]);
         const double turn =
             std::atan2(carried_.dot(p.cross(q)), p.dot(q)) * 180.0 / std::numbers::pi;
-        if (within(turn, 180.0 + kClosingRoom) < 0.5 * folded) ++unfolded;
+        if (within(turn, kLeftOutMost) < 0.5 * folded) ++unfolded;
     }
     if (unfolded > 0)
-        reading.unfolded =
+        reading.unfoldedShare =
             static_cast<double>(unfolded) / static_cast<double>(left.vertices.size() + flap.size());
-    if (!reading.turnedBack && reading.unfolded == 0.0) return std::nullopt;
+    if (!reading.turnedBack && reading.unfoldedShare == 0.0) return std::nullopt;
     return reading;
 }
 

@@ -43,11 +43,12 @@ class FoldWatch {
         // half the fold's angle since the fold began. It was never carried round, or it
         // was dragged round and fell back open at the let-go (an editor session filmed
         // both). 0 if all of it is folded or none was left out.
-        double unfolded = 0.0;
+        double unfoldedShare = 0.0;
     };
 
     // `carried`: the axis the carry turned the flap about (right-handed, the way it went);
-    // `angle`: the angle it was folded to (radians), which bounds how far it can turn back.
+    // `angle`: the angle it was folded to (radians), which bounds how far it can turn back;
+    // `left`: the paper the carry did not hold, as it lay when the fold began.
     void start(const Sheet& sheet, std::vector<Index> flap, const Vec3& carried, double angle,
                double time, LeftOut left = {});
     // Another edit came first (the sheet it watched may be gone).

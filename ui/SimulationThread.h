@@ -83,7 +83,7 @@ class SimulationThread : public QObject {
     // EditSession::kSprangBack: the crease did not keep it.
     void foldSprangBack(double degrees);
     // At the same time, unless the flap sprang back: this share (0..1) of the paper on the
-    // flap's side, at least EditSession::kLeftBehind, was not held by the carry and lies
+    // flap's side, at least EditSession::kLeftBehindShare, was not held by the carry and lies
     // unfolded.
     void foldLeftPaperBehind(double share);
     // A replaceWorld was applied: the old World is gone and a snapshot of the new one
