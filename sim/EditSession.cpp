@@ -709,11 +709,7 @@ FoldRefusal EditSession::fold(const FoldRequest& request) {
     for (const PinGroup& g : plan.motions) setPins(g.vertices, true);
     foldRelease_ = plan.release;
     foldAngle_ = request.angle;
-    foldLeftOut_.vertices = std::move(plan.leftOut);
-    foldLeftOut_.pivot = plan.pivot;
-    foldLeftOut_.atStart.clear();
-    for (Index i : foldLeftOut_.vertices)
-        foldLeftOut_.atStart.push_back(sim_.world().sheet.verts.x[i]);
+    foldLeftOut_ = std::move(plan.leftOut);
     auto& groups = sim_.world().script.pins;
     foldGroup_ = groups.size();
     for (PinGroup& g : plan.motions) groups.push_back(std::move(g));

@@ -52,6 +52,13 @@ int stepsFor(const World& w, double seconds) {
 
 struct StretchRun {
     double maxStretch = 0.0, maxRms = 0.0;
+    void add(const SheetStats& st) {
+        maxStretch = std::max(maxStretch, st.maxStretch);
+        maxRms = std::max(maxRms, st.rmsStretch);
+    }
+    // A run whose step blew up fails its rows rather than ending them at what came
+    // before, which could pass.
+    void blewUp() { maxStretch = maxRms = std::numeric_limits<double>::infinity(); }
 };
 
 void addStretchRows(std::vector<FidelityRow>& rows, const std::string& scene, const StretchRun& r) {
@@ -72,15 +79,13 @@ void pressChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
     const double radius = w.sphere.radius;
     const int steps = stepsFor(w, end);
     for (int k = 0; k < steps; ++k) {
-        if (sim.step() != StepStatus::Ok) { // blown up: a failed row, not a short run
-            stretch.maxStretch = stretch.maxRms = std::numeric_limits<double>::infinity();
+        if (sim.step() != StepStatus::Ok) {
+            stretch.blewUp();
             settled = -1.0;
             break;
         }
         const Sheet& s = sim.world().sheet;
-        const SheetStats st = computeStats(s);
-        stretch.maxStretch = std::max(stretch.maxStretch, st.maxStretch);
-        stretch.maxRms = std::max(stretch.maxRms, st.rmsStretch);
+        stretch.add(computeStats(s));
         double m = 0.0, my = 0.0;
         for (Index i = 0; i < s.verts.size(); ++i) {
             m += s.verts.m[i];
@@ -116,15 +121,11 @@ void stretchCheck(const FidelityOptions& o, const std::string& scene, double sec
     StretchRun r;
     const int steps = stepsFor(sim.world(), seconds);
     for (int k = 0; k < steps; ++k) {
-        // A step that blew up fails the rows rather than ending them at what came before,
-        // which could pass.
         if (sim.step() != StepStatus::Ok) {
-            r.maxStretch = r.maxRms = std::numeric_limits<double>::infinity();
+            r.blewUp();
             break;
         }
-        const SheetStats st = computeStats(sim.world().sheet);
-        r.maxStretch = std::max(r.maxStretch, st.maxStretch);
-        r.maxRms = std::max(r.maxRms, st.rmsStretch);
+        r.add(computeStats(sim.world().sheet));
     }
     addStretchRows(rows, scene, r);
 }
@@ -333,13 +334,11 @@ void strokeChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
         if (move.norm() > limit) move *= limit / move.norm();
         w.sphere.center += move;
         w.sphere.velocity = move / w.params.dt;
-        if (sim.step() != StepStatus::Ok) { // blown up: a failed row, not a short run
-            stretch.maxStretch = stretch.maxRms = std::numeric_limits<double>::infinity();
+        if (sim.step() != StepStatus::Ok) {
+            stretch.blewUp();
             break;
         }
-        const SheetStats st = computeStats(sim.world().sheet);
-        stretch.maxStretch = std::max(stretch.maxStretch, st.maxStretch);
-        stretch.maxRms = std::max(stretch.maxRms, st.rmsStretch);
+        stretch.add(computeStats(sim.world().sheet));
     }
     addStretchRows(rows, "push strokes", stretch);
     rows.push_back({"push strokes", "vertices after the strokes / at the start",

@@ -121,13 +121,16 @@ FoldPlan planFold(const World& world, const FoldRequest& request) {
                !V.pinned[i];
     };
     PinGroup carry;
-    for (Index i = 0; i < V.size(); ++i)
-        if (holdable(i, 1.0)) carry.vertices.push_back(i);
+    for (Index i = 0; i < V.size(); ++i) {
+        if (holdable(i, 1.0)) {
+            carry.vertices.push_back(i);
+        } else if (beyond(i, 1.0) > kFoldBand && !V.pinned[i]) {
+            plan.leftOut.vertices.push_back(i);
+            plan.leftOut.atStart.push_back(V.x[i]);
+        }
+    }
     if (carry.vertices.empty()) return refuse(FoldRefusal::NothingToFold);
-    for (Index i = 0; i < V.size(); ++i)
-        if (beyond(i, 1.0) > kFoldBand && !V.pinned[i] && !holdable(i, 1.0))
-            plan.leftOut.push_back(i);
-    plan.pivot = onPaper;
+    plan.leftOut.pivot = onPaper;
     // Turning about side·axis carries the flap toward the front (axis × across = front).
     carry.axis = toward * side * axis;
     // The flap lands on the rest this far off the paper's plane: above the highest paper

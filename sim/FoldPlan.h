@@ -1,5 +1,6 @@
 #pragma once
 
+#include "FoldWatch.h"
 #include "SceneScript.h"
 #include "World.h"
 
@@ -50,9 +51,7 @@ struct FoldPlan {
     // The paper on the flap's side, beyond the band, that the carry does not hold: off
     // the plane along the line (the upper or lower layers of a folded stack, a first
     // crease's loop). It goes round only if the paper it hangs on takes it (FoldWatch).
-    std::vector<Index> leftOut;
-    // A point of the line the flap turns about, in the paper's plane there.
-    Vec3 pivot = Vec3::Zero();
+    FoldLeftOut leftOut;
 };
 
 // The carry turns at this rate: a half turn in 1.5 s, as a hand folds a sheet.

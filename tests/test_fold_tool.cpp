@@ -40,6 +40,16 @@ EditSession editorSession(bool damage = true, const std::string& integrator = {}
     return s;
 }
 
+// Steps the session, which must say nothing of a fold all the while (neither that it
+// opened again nor that it left paper unfolded).
+void saysNothingOfTheFoldFor(EditSession& s, int steps) {
+    for (int k = 0; k < steps; ++k) {
+        QCOMPARE(s.advance(1), StepStatus::Ok);
+        QVERIFY(!s.takeFoldTurnedBack());
+        QVERIFY(!s.takeFoldLeftBehind());
+    }
+}
+
 // Across the middle of the sheet, from edge to edge and beyond (the line is a line).
 FoldRequest acrossTheMiddle(double angle = kPi, bool mountain = false) {
     return {Vec3(-0.15, 0.0, 0.0), Vec3(0.15, 0.0, 0.0), angle, mountain};
@@ -842,22 +852,14 @@ class TestFoldTool : public QObject {
         const auto second = s.takeFinished();
         QVERIFY(second);
         QVERIFY(s.undoStroke(second->stroke));
-        for (int k = 0; k < 480; ++k) {
-            QCOMPARE(s.advance(1), StepStatus::Ok);
-            QVERIFY(!s.takeFoldTurnedBack());
-            QVERIFY(!s.takeFoldLeftBehind());
-        }
+        saysNothingOfTheFoldFor(s, 480);
         // Nor after a Reset within it: the flat new sheet is no fold that opened.
         QCOMPARE(s.fold({Vec3(0.0, 0.0, -0.2), Vec3(0.0, 0.0, 0.2), kPi, false}),
                  FoldRefusal::None);
         runUntilLetGo(s);
         QCOMPARE(s.advance(120), StepStatus::Ok);
         QVERIFY(s.reset(makeEditorScene("press", SceneOptions{}, 0.03)));
-        for (int k = 0; k < 480; ++k) {
-            QCOMPARE(s.advance(1), StepStatus::Ok);
-            QVERIFY(!s.takeFoldTurnedBack());
-            QVERIFY(!s.takeFoldLeftBehind());
-        }
+        saysNothingOfTheFoldFor(s, 480);
     }
 
     void aFoldThatOpenedIsSaidBeforeWhatItLeftBehind() {
@@ -899,11 +901,11 @@ class TestFoldTool : public QObject {
                 if (const auto l = s.takeFoldLeftBehind()) left = l;
             }
         };
-        QVERIFY(planFold(s.world(), acrossTheMiddle()).leftOut.empty()); // a flat sheet
+        QVERIFY(planFold(s.world(), acrossTheMiddle()).leftOut.vertices.empty()); // a flat sheet
         foldAndWait(acrossTheMiddle());
         QVERIFY(turned && !left);
         const FoldRequest second{Vec3(0.0, 0.0, -0.2), Vec3(0.0, 0.0, 0.2), kPi, false};
-        QVERIFY(!planFold(s.world(), second).leftOut.empty()); // the first fold's loop
+        QVERIFY(!planFold(s.world(), second).leftOut.vertices.empty()); // the first fold's loop
         foldAndWait(second);
         QVERIFY(turned && *turned < EditSession::kSprangBack);
         QVERIFY2(!left || *left < EditSession::kLeftBehindShare,
@@ -923,27 +925,23 @@ class TestFoldTool : public QObject {
         for (const PinGroup& g : plan.motions)
             if (g.turnRate != 0.0) carried = g.vertices.size();
         qInfo("the third fold carries %zu vertices and leaves %zu out", carried,
-              plan.leftOut.size());
-        QVERIFY(plan.leftOut.size() > carried / 4); // the stack's other layers
+              plan.leftOut.vertices.size());
+        QVERIFY(plan.leftOut.vertices.size() > carried / 4); // the stack's other layers
         // Undone within its second, the third fold says nothing, though it left paper out.
         QCOMPARE(s.fold(third), FoldRefusal::None);
         runUntilLetGo(s);
         const auto undone = s.takeFinished();
         QVERIFY(undone);
         QVERIFY(s.undoStroke(undone->stroke));
-        for (int k = 0; k < 480; ++k) {
-            QCOMPARE(s.advance(1), StepStatus::Ok);
-            QVERIFY(!s.takeFoldTurnedBack());
-            QVERIFY(!s.takeFoldLeftBehind());
-        }
+        saysNothingOfTheFoldFor(s, 480);
         // Still on the flap's side of the line: each left-out vertex by itself.
         std::vector<double> sideBefore;
-        for (Index i : plan.leftOut) sideBefore.push_back(V.x[i].z() - z);
+        for (Index i : plan.leftOut.vertices) sideBefore.push_back(V.x[i].z() - z);
         foldAndWait(third);
         std::size_t stillThere = 0;
-        for (std::size_t k = 0; k < plan.leftOut.size(); ++k)
-            if (sideBefore[k] * (V.x[plan.leftOut[k]].z() - z) > 0.0) ++stillThere;
-        const double share = double(stillThere) / double(plan.leftOut.size() + carried);
+        for (std::size_t k = 0; k < plan.leftOut.vertices.size(); ++k)
+            if (sideBefore[k] * (V.x[plan.leftOut.vertices[k]].z() - z) > 0.0) ++stillThere;
+        const double share = double(stillThere) / double(plan.leftOut.vertices.size() + carried);
         qInfo("%zu of its left-out vertices are still on the flap's side (%.2f of that side); "
               "turned back %.1f degrees; the session says %s",
               stillThere, share, turned ? *turned : 0.0,
