@@ -31,6 +31,8 @@ int runFidelity(const QStringList& arguments) {
         {QStringLiteral("gravity-outside-filter"),
          QStringLiteral("The jacobi family: integrate gravity outside the implicit filter (the "
                         "editor's setting).")},
+        {QStringLiteral("no-self-contact"),
+         QStringLiteral("xpbd: let the paper's layers pass through each other.")},
         {QStringLiteral("csv"), QStringLiteral("Also write the table as CSV to this file."),
          QStringLiteral("file")},
     });
@@ -42,6 +44,7 @@ int runFidelity(const QStringList& arguments) {
         throw UsageError{QStringLiteral("--material: unknown material '%1' (tissue, office, card)")
                              .arg(parser.value(QStringLiteral("material")))};
     o.gravityOutsideFilter = parser.isSet(QStringLiteral("gravity-outside-filter"));
+    o.selfContact = !parser.isSet(QStringLiteral("no-self-contact"));
     o.substeps =
         static_cast<int>(integerOption(parser, QStringLiteral("substeps"), 1, 1000).value_or(0));
     const QString csvPath = parser.value(QStringLiteral("csv"));

@@ -47,6 +47,8 @@ void addWorldOptions(QCommandLineParser& parser) {
          QStringLiteral("Paper (xpbd): %1.").arg(joined(materialNames())), QStringLiteral("name")},
         {QStringLiteral("substeps"), QStringLiteral("Sub-steps per step (xpbd, 1-1000)."),
          QStringLiteral("n")},
+        {QStringLiteral("no-self-contact"),
+         QStringLiteral("Let the paper's layers pass through each other (xpbd).")},
         {QStringLiteral("gravity-outside-filter"),
          QStringLiteral("Integrate gravity outside the implicit filter (the editor's default; "
                         "the paper's Eq. 6 divides it by W).")},
@@ -89,6 +91,7 @@ World worldFromOptions(const QCommandLineParser& parser) {
     if (auto v = integerOption(parser, QStringLiteral("iterations"), 0, 1000))
         p.iterations = static_cast<int>(*v);
     if (parser.isSet(QStringLiteral("gravity-outside-filter"))) p.gravityOutsideFilter = true;
+    if (parser.isSet(QStringLiteral("no-self-contact"))) p.selfContact = false;
     if (auto v = integerOption(parser, QStringLiteral("substeps"), 1, 1000))
         p.substeps = static_cast<int>(*v);
     if (parser.isSet(QStringLiteral("material"))) {

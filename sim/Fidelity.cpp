@@ -20,6 +20,7 @@ void applySolver(SimParams& p, const FidelityOptions& o) {
     p.integrator = o.integrator;
     if (o.substeps > 0) p.substeps = o.substeps;
     if (o.gravityOutsideFilter) p.gravityOutsideFilter = true;
+    p.selfContact = o.selfContact;
 }
 
 World configured(World w, const FidelityOptions& o) {

@@ -27,6 +27,7 @@ struct FidelityOptions {
     int substeps = 0; // "xpbd": 0 keeps the default
     // The jacobi family: gravity outside the implicit filter (the editor's setting).
     bool gravityOutsideFilter = false;
+    bool selfContact = true; // "xpbd": the layers touch
 };
 
 std::vector<FidelityRow> runFidelity(const FidelityOptions& options);

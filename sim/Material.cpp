@@ -15,6 +15,9 @@ bool materialPreset(std::string_view name, Material& out) {
         m.creaseSpacing = 0.00075;   // 15 t
         m.groundStaticFriction = 0.5;
         m.groundKineticFriction = 0.4;
+        m.thickness = 5.0e-5;
+        m.paperStaticFriction = 0.6;
+        m.paperKineticFriction = 0.5;
     } else if (name == "card") {
         m.name = "card";
         m.arealDensity = 0.250;      // 250 g/m²
@@ -24,6 +27,9 @@ bool materialPreset(std::string_view name, Material& out) {
         m.creaseSpacing = 0.0045;    // 15 t
         m.groundStaticFriction = 0.4;
         m.groundKineticFriction = 0.3;
+        m.thickness = 3.0e-4;
+        m.paperStaticFriction = 0.4;
+        m.paperKineticFriction = 0.3;
     } else {
         return false;
     }

@@ -27,6 +27,11 @@ struct Material {
     double groundKineticFriction = 0.35;
     double toolStaticFriction = 0.8;
     double toolKineticFriction = 0.6;
+    // The sheet's thickness (m): how far apart two layers of it lie when they touch.
+    double thickness = 1.0e-4;
+    // Coulomb friction of the paper against itself, where its layers touch.
+    double paperStaticFriction = 0.5;
+    double paperKineticFriction = 0.4;
     friend bool operator==(const Material&, const Material&) = default;
 };
 

@@ -52,6 +52,8 @@ struct SimParams {
     bool clampCompressed = true;
 
     bool breaking = true;
+    // "xpbd": the paper's layers touch instead of passing through each other.
+    bool selfContact = true;
     bool hinges = true;
     // A hinge is inserted when |x_r - x_l| falls below this fraction of its rest distance.
     double hingeThreshold = 0.5;

@@ -120,6 +120,7 @@ QCborMap paramsToCbor(const SimParams& p) {
     m[QLatin1String("clampCompressed")] = p.clampCompressed;
     m[QLatin1String("breaking")] = p.breaking;
     m[QLatin1String("hinges")] = p.hinges;
+    m[QLatin1String("selfContact")] = p.selfContact;
     m[QLatin1String("hingeThreshold")] = p.hingeThreshold;
     m[QLatin1String("breakReferenceStep")] = p.breakReferenceStep;
     m[QLatin1String("breakReferenceContraction")] = p.breakReferenceContraction;
@@ -136,6 +137,9 @@ QCborMap paramsToCbor(const SimParams& p) {
     mat[QLatin1String("groundKineticFriction")] = p.material.groundKineticFriction;
     mat[QLatin1String("toolStaticFriction")] = p.material.toolStaticFriction;
     mat[QLatin1String("toolKineticFriction")] = p.material.toolKineticFriction;
+    mat[QLatin1String("thickness")] = p.material.thickness;
+    mat[QLatin1String("paperStaticFriction")] = p.material.paperStaticFriction;
+    mat[QLatin1String("paperKineticFriction")] = p.material.paperKineticFriction;
     m[QLatin1String("material")] = mat;
     m[QLatin1String("substeps")] = p.substeps;
     m[QLatin1String("bendingDamping")] = p.bendingDamping;
@@ -325,6 +329,8 @@ SimParams paramsFromCbor(const QCborMap& m) {
     p.clampCompressed = boolAt(m, "clampCompressed", w);
     p.breaking = boolAt(m, "breaking", w);
     p.hinges = boolAt(m, "hinges", w);
+    // Files from before self-contact: their sheet goes on with it, as new ones do.
+    if (m.contains(QLatin1String("selfContact"))) p.selfContact = boolAt(m, "selfContact", w);
     p.hingeThreshold = realAt(m, "hingeThreshold", w, 0.0, 10.0);
     p.breakReferenceStep = realAt(m, "breakReferenceStep", w, 1e-6, 10.0);
     // Absent from files written while Eq. 10 was read per unit of time: the default.
@@ -355,6 +361,16 @@ SimParams paramsFromCbor(const QCborMap& m) {
         x.groundKineticFriction = realAt(mat, "groundKineticFriction", wm, 0.0, 10.0);
         x.toolStaticFriction = realAt(mat, "toolStaticFriction", wm, 0.0, 10.0);
         x.toolKineticFriction = realAt(mat, "toolKineticFriction", wm, 0.0, 10.0);
+        // Files from before self-contact take their preset's thickness and friction.
+        if (mat.contains(QLatin1String("thickness"))) {
+            x.thickness = realAt(mat, "thickness", wm, 0.0, 0.1);
+            x.paperStaticFriction = realAt(mat, "paperStaticFriction", wm, 0.0, 10.0);
+            x.paperKineticFriction = realAt(mat, "paperKineticFriction", wm, 0.0, 10.0);
+        } else if (Material preset; materialPreset(x.name, preset)) {
+            x.thickness = preset.thickness;
+            x.paperStaticFriction = preset.paperStaticFriction;
+            x.paperKineticFriction = preset.paperKineticFriction;
+        }
     }
     if (m.contains(QLatin1String("substeps")))
         p.substeps = static_cast<int>(integerAt(m, "substeps", w, 1, 1000));
@@ -639,6 +655,10 @@ const CborBounds& sheetFileBounds() {
                                 "groundKineticFriction",
                                 "toolStaticFriction",
                                 "toolKineticFriction",
+                                "thickness",
+                                "paperStaticFriction",
+                                "paperKineticFriction",
+                                "selfContact",
                                 "substeps",
                                 "bendingDamping",
                                 "toolForce",

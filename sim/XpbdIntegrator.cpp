@@ -1,6 +1,7 @@
 #include "XpbdIntegrator.h"
 
 #include "DeskHold.h"
+#include "TriangleGeometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,38 +42,6 @@ void addTriangleStiffness(const Sheet& sheet, const Triangle& t, double et,
         return;
     }
     for (Index e : t.e) k[e] += 0.375 * et;
-}
-
-// Barycentric coordinates of the point of triangle (a, b, c) closest to p (Ericson,
-// Real-Time Collision Detection, 5.1.5).
-Vec3 closestPointBarycentric(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
-    const Vec3 ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-    if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
-    const Vec3 bp = p - b;
-    const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-    if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
-        const double v = d1 / (d1 - d3);
-        return {1.0 - v, v, 0.0};
-    }
-    const Vec3 cp = p - c;
-    const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-    if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
-        const double w = d2 / (d2 - d6);
-        return {1.0 - w, 0.0, w};
-    }
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
-        const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        return {0.0, 1.0 - w, w};
-    }
-    const double denom = 1.0 / (va + vb + vc);
-    const double v = vb * denom, w = vc * denom;
-    return {1.0 - v - w, v, w};
 }
 
 // Euler buckling of the strip spring s stands for (width (A1 + A2) / l0, pinned ends):
@@ -930,6 +899,23 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
                           -k.maxPull * h2, k.maxPush * h2},
                          k.colour, k.colour == kSharedColour);
     }
+    // The layers that can meet in this step: the pairs that can touch before any vertex
+    // has moved farther than twice its travel in a step (at the speed it starts with and
+    // what gravity adds) plus kContactMargin.
+    const bool selfContact = params.selfContact && mat.thickness > 0.0;
+    if (selfContact) {
+        allowance_.resize(static_cast<std::size_t>(nv));
+        for (Index i = 0; i < nv; ++i)
+            allowance_[i] =
+                std::min(2.0 * (V.v[i].norm() + g.norm() * params.dt) * params.dt + kContactMargin,
+                         kMaxContactAllowance);
+        selfContact_.find(sheet, w_, mat.thickness, allowance_, kContactApart * mat.creaseSpacing);
+    }
+    const auto touchLayers = [&](bool withFriction) {
+        if (selfContact)
+            selfContact_.resolve(V.x, xPrev_, w_, mat.paperStaticFriction, mat.paperKineticFriction,
+                                 withFriction, kContactSeparationSpeed * h);
+    };
     yieldPlastically(sheet, mat);
     for (int sub = 0; sub < n; ++sub) {
         if (sub % kSubstepsPerBendingSolve == 0)
@@ -949,6 +935,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         pullWithTool(c);
         holdByHand(sub);
         collideGround(true);
+        touchLayers(true);
         stretchStep_.relax(V.x);
         // Long-range attachments (Kim et al. 2012): no vertex gets farther from its
         // nearest pinned vertex than the paper between them allows, so a hanging sheet

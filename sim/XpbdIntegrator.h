@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Integrator.h"
+#include "SelfContact.h"
 #include "StretchPass.h"
 #include "VectorLdlt.h"
 
@@ -98,6 +99,19 @@ inline constexpr double kStretchBound = 0.01;
 // cap its push at the buckling load) and is left out of the projection; every other
 // edge is held at its rest length, as paper below its buckling load is.
 inline constexpr double kBuckledStrain = 1e-5;
+// Self-contact looks for the layers a vertex may meet this much farther than twice its
+// travel in a step (m): room for what the constraints move it besides.
+inline constexpr double kContactMargin = 5e-4;
+// ... but no farther than this (m): paper flung at tens of metres a second by a step that
+// went wrong asked for 450,000 pairs. Paper faster than this per step (4.8 m/s at
+// h = 1/240 s) may pass through a layer it was not near when the step began.
+inline constexpr double kMaxContactAllowance = 0.02;
+// Layers that a sub-step begins inside each other's thickness part at most this fast
+// (m/s): 0.4 mm a step.
+inline constexpr double kContactSeparationSpeed = 0.1;
+// Paper closer than this many crease spacings to a vertex in the material is its own
+// layer bending, not another layer it could touch: the creases and hinges keep it.
+inline constexpr double kContactApart = 3.0;
 // Compliance of the tool's grip (m/N): a millimetre of slack per newton.
 inline constexpr double kGripCompliance = 1e-3;
 // A hand that grabs the paper holds its vertex by a grip of the same compliance and pulls
@@ -129,6 +143,8 @@ class XpbdIntegrator final : public Integrator {
     bool resolvesContacts() const override { return true; }
     void setContacts(const ContactScene& scene) override { contacts_ = scene; }
     bool asleep() const override { return asleep_; }
+    // The layers that could touch in the last step; exposed for tests and probes.
+    const SelfContact& selfContact() const { return selfContact_; }
     // The fast projection's work since this integrator was made: Newton iterations that
     // factored their system (each with its own ordering, factorisation and solve).
     struct ProjectionWork {
@@ -172,6 +188,8 @@ class XpbdIntegrator final : public Integrator {
     bool mustWake(const Sheet& sheet) const;
 
     ContactScene contacts_;
+    SelfContact selfContact_;
+    std::vector<double> allowance_; // per vertex: how far it may move in this step, m
     std::array<std::int64_t, 8> signature_{-1, -1, -1, -1, -1, -1, -1, -1};
     Material builtFor_;
     std::vector<Stencil> stencils_;

@@ -197,6 +197,7 @@ class TestSheetFile : public QObject {
         w.params.substeps = 12;
         w.params.bendingDamping = 0.02;
         w.params.toolForce = 3.5;
+        w.params.selfContact = false;
         Material card;
         QVERIFY(materialPreset("card", card));
         setMaterial(w, card);
@@ -206,6 +207,7 @@ class TestSheetFile : public QObject {
         QCOMPARE(l.world->params.substeps, 12);
         QCOMPARE(l.world->params.bendingDamping, 0.02);
         QCOMPARE(l.world->params.toolForce, 3.5);
+        QVERIFY(!l.world->params.selfContact);
         QVERIFY(l.world->sheet.verts.m == w.sheet.verts.m);
 
         QCborMap root = QCborValue::fromCbor(encodeWorld(*makeScene("press"))).toMap();
@@ -232,6 +234,24 @@ class TestSheetFile : public QObject {
             QVERIFY(oldCard.world->params.material == card);
         }
         QVERIFY(card.creaseSpacing != Material{}.creaseSpacing);
+        // One written before self-contact has neither the paper's thickness nor its
+        // friction on itself: it takes its preset's, and its layers touch.
+        {
+            QCborMap cardRoot = QCborValue::fromCbor(encodeWorld(w)).toMap();
+            QCborMap cardParams = cardRoot[QLatin1String("params")].toMap();
+            QCborMap cardMaterial = cardParams[QLatin1String("material")].toMap();
+            for (const char* key : {"thickness", "paperStaticFriction", "paperKineticFriction"})
+                cardMaterial.remove(QLatin1String(key));
+            cardParams[QLatin1String("material")] = cardMaterial;
+            cardParams.remove(QLatin1String("selfContact"));
+            cardRoot[QLatin1String("params")] = cardParams;
+            const WorldLoad oldCard = decodeWorld(QCborValue(cardRoot).toCbor());
+            QVERIFY2(oldCard.world, qPrintable(oldCard.error));
+            QVERIFY(oldCard.world->params.material == card);
+            QVERIFY(oldCard.world->params.selfContact);
+        }
+        QVERIFY(card.thickness != Material{}.thickness);
+        QVERIFY(card.paperStaticFriction != Material{}.paperStaticFriction);
     }
 
     // A sheet saved before breaks followed loading has no peak contractions: it counts

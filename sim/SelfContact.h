@@ -1,0 +1,63 @@
+#pragma once
+
+#include "Sheet.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace pf {
+
+// Contact of the paper with itself: layers of a fold or a crumple lie on each other,
+// a sheet's thickness apart, and slide on each other with paper-on-paper friction.
+// Each vertex is kept on the side of every triangle it was on when the step began,
+// so it cannot pass through a layer however far it moves within the step (the pairs
+// are found once per step, for everything that can meet in it, from the state alone:
+// a run resumed from a file finds the same).
+class SelfContact {
+  public:
+    // Finds the vertex-triangle pairs that can touch before a vertex has moved farther
+    // than its `allowance` from where it is now: a free vertex within the thickness plus
+    // its own and the triangle's corners' allowances of a triangle. Triangles the vertex
+    // is a corner of are not its contacts, nor paper within `apart` of it in the
+    // material. Pairs are in triangle order, then the hash's (a sorted vector's): the
+    // same sheet gives the same pairs in the same order.
+    void find(const Sheet& sheet, const std::vector<double>& inverseMass, double thickness,
+              const std::vector<double>& allowance, double apart);
+    // Pushes every pair that is closer than the thickness apart back to it, the vertex
+    // and the triangle's corners by their inverse masses, but a pair already that close
+    // at `previous` (or through) at most `maxSeparation` farther apart than it was. With
+    // friction, the slip of the vertex over the triangle since `previous` is undone while
+    // it is within μs times the push, else cut by μk times it.
+    void resolve(std::vector<Vec3>& x, const std::vector<Vec3>& previous,
+                 const std::vector<double>& inverseMass, double staticFriction,
+                 double kineticFriction, bool withFriction, double maxSeparation);
+    struct Pair {
+        Index vertex, triangle;
+        double side; // +1: on the side the triangle's normal points to
+        // How far the two could have moved toward each other since they were found: a
+        // vertex deeper than this on the other side came round the layer's edge, not
+        // through it, and is left there.
+        double depth;
+    };
+    const std::vector<Pair>& pairs() const { return pairs_; }
+    // The pairs whose vertex now lies on the other side of its triangle (its foot still
+    // in it) than when they were found: paper that went through paper.
+    std::size_t crossed(const std::vector<Vec3>& x) const;
+
+  private:
+    const std::vector<Triangle>* tris_ = nullptr;
+    std::vector<Pair> pairs_;
+    double thickness_ = 0.0;
+    std::vector<Index> seenBy_; // the triangle that tried the vertex last
+    // The free vertices' cells of the hash: (cell key, vertex), sorted by key.
+    std::vector<std::pair<std::uint64_t, Index>> cells_;
+    struct Slot {
+        std::uint64_t key = 0;
+        Index begin = 0, end = 0; // the cell's run in cells_; end 0: an empty slot
+    };
+    std::vector<Slot> slots_;
+    // The triangles round each vertex, vertex by vertex.
+    std::vector<Index> ringStart_, ring_, ringFill_;
+};
+
+} // namespace pf

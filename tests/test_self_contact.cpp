@@ -1,0 +1,194 @@
+// Paper touches itself (sim/SelfContact.h): a layer that comes down on another lies a
+// sheet's thickness above it, whatever its speed, and slides on it with friction.
+#include "Scenes.h"
+#include "SelfContact.h"
+#include "SheetStats.h"
+#include "Simulation.h"
+#include "TriangleGeometry.h"
+#include "XpbdIntegrator.h"
+
+#include <QTest>
+#include <numbers>
+
+using namespace pf;
+
+namespace {
+
+constexpr double kThickness = 1e-4;
+
+// Two triangles of paper far apart in the material, lying one over the other: the lower
+// one flat at y = 0, the upper one's first corner 0.5 mm over the lower's middle.
+Sheet twoLayers() {
+    Sheet s;
+    const double m = 1e-5;
+    s.addVertex(Vec3(0.0, 0.0, 0.0), Vec3::Zero(), m, Vec2(0.0, 0.0));
+    s.addVertex(Vec3(0.01, 0.0, 0.0), Vec3::Zero(), m, Vec2(0.01, 0.0));
+    s.addVertex(Vec3(0.0, 0.0, 0.01), Vec3::Zero(), m, Vec2(0.0, 0.01));
+    s.addVertex(Vec3(0.003, 5e-4, 0.003), Vec3::Zero(), 2.0 * m, Vec2(0.1, 0.1));
+    s.addVertex(Vec3(0.03, 5e-4, 0.0), Vec3::Zero(), m, Vec2(0.13, 0.1));
+    s.addVertex(Vec3(0.0, 5e-4, 0.03), Vec3::Zero(), m, Vec2(0.1, 0.13));
+    s.tris.push_back({{0, 2, 1}, {kNone, kNone, kNone}}); // normal +y
+    s.tris.push_back({{3, 5, 4}, {kNone, kNone, kNone}});
+    return s;
+}
+
+std::vector<double> inverseMasses(const Sheet& s) {
+    std::vector<double> w;
+    for (double m : s.verts.m) w.push_back(1.0 / m);
+    return w;
+}
+
+// Height of point p over the plane of triangle t.
+double over(const Sheet& s, const std::vector<Vec3>& x, Index t, const Vec3& p) {
+    const auto& v = s.tris[t].v;
+    const Vec3 n = (x[v[1]] - x[v[0]]).cross(x[v[2]] - x[v[0]]).normalized();
+    return (p - x[v[0]]).dot(n);
+}
+
+// The editor's sheet with its far half bent round over the near half in a U of radius
+// 4 mm, the upper layer 8 mm over the lower one and thrown down at `speed`.
+struct UFold {
+    World world;
+    std::vector<Index> upper;
+};
+
+UFold bentOverItself(double speed, bool selfContact) {
+    UFold u{*makeScene("press"), {}};
+    World& w = u.world;
+    w.script = {};
+    w.sphere.active = false;
+    w.params.breaking = w.params.hinges = false; // an elastic sheet: nothing holds it up
+    w.params.selfContact = selfContact;
+    auto& V = w.sheet.verts;
+    const double r = 0.004, pi = std::numbers::pi;
+    for (Index i = 0; i < V.size(); ++i) {
+        const double s = V.X[i].y(); // along the length from the middle
+        if (s <= 0.0) continue;
+        if (s < pi * r) {
+            V.x[i] = Vec3(V.X[i].x(), r - r * std::cos(s / r), r * std::sin(s / r));
+        } else {
+            V.x[i] = Vec3(V.X[i].x(), 2.0 * r, -(s - pi * r));
+            V.v[i] = Vec3(0.0, -speed, 0.0);
+            u.upper.push_back(i);
+        }
+    }
+    return u;
+}
+
+} // namespace
+
+class TestSelfContact : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void aVertexPushedThroughALayerIsPutBackOnItsSide() {
+        const Sheet s = twoLayers();
+        const std::vector<double> w = inverseMasses(s);
+        SelfContact contact;
+        contact.find(s, w, kThickness, std::vector<double>(6, 0.005), 0.0);
+        bool found = false;
+        for (const SelfContact::Pair& p : contact.pairs())
+            if (p.vertex == 3 && p.triangle == 0) found = p.side > 0.0;
+        QVERIFY2(found, "the corner over the lower layer is its contact, on its upper side");
+
+        // In one step the corner goes 2 mm through the lower layer, the whole way.
+        std::vector<Vec3> x = s.verts.x;
+        const std::vector<Vec3> before = x;
+        x[3].y() = -2e-3;
+        QCOMPARE(contact.crossed(x), std::size_t{1});
+        const std::vector<Vec3> pushed = x;
+        contact.resolve(x, before, w, 0.5, 0.4, false, 0.0);
+        QCOMPARE(contact.crossed(x), std::size_t{0});
+        // (The lower layer tilts a little as its corners give way by their weights.)
+        qInfo("%.4f mm over the layer", 1e3 * over(s, x, 0, x[3]));
+        QVERIFY(std::abs(over(s, x, 0, x[3]) - kThickness) < 0.01 * kThickness);
+        // Both layers moved, by their inverse masses: momentum is unchanged.
+        Vec3 momentum = Vec3::Zero();
+        for (Index i = 0; i < s.verts.size(); ++i) momentum += s.verts.m[i] * (x[i] - pushed[i]);
+        QVERIFY(momentum.norm() < 1e-18);
+        QVERIFY(x[0].y() < 0.0); // the lower layer gave way too
+    }
+
+    void layersSlideOnEachOtherByCoulombFriction() {
+        // The upper corner presses 0.05 mm into the layer's thickness while it slips
+        // sideways: a slip within μs times that is undone, a larger one cut by μk times it.
+        const Sheet s = twoLayers();
+        const std::vector<double> w = inverseMasses(s);
+        SelfContact contact;
+        contact.find(s, w, kThickness, std::vector<double>(6, 0.005), 0.0);
+        const double push = 5e-5, mus = 0.5, muk = 0.4;
+        for (const double slip : {0.8 * mus * push, 3.0 * push}) {
+            std::vector<Vec3> previous = s.verts.x;
+            previous[3].y() = kThickness + 1e-4;
+            std::vector<Vec3> x = previous;
+            x[3] += Vec3(slip, -1e-4 - push, 0.0);
+            // The corner's slip over the triangle's point under it.
+            const auto& lower = s.tris[0].v;
+            Vec3 b;
+            QVERIFY(footBarycentric(x[lower[0]], x[lower[1]], x[lower[2]], x[3], b));
+            contact.resolve(x, previous, w, mus, muk, true, 0.0);
+            Vec3 under = Vec3::Zero();
+            for (int k = 0; k < 3; ++k)
+                under += b[k] * (x[lower[static_cast<std::size_t>(k)]] -
+                                 previous[lower[static_cast<std::size_t>(k)]]);
+            const double left = ((x[3] - previous[3]) - under).x();
+            const double expected = slip <= mus * push ? 0.0 : slip - muk * push;
+            qInfo("slip %.1f µm: %.3f µm left (expected %.3f)", 1e6 * slip, 1e6 * left,
+                  1e6 * expected);
+            QVERIFY(std::abs(left - expected) < 1e-9);
+            QVERIFY(std::abs(over(s, x, 0, x[3]) - kThickness) < 0.01 * kThickness);
+        }
+    }
+
+    void aFlatSheetIsOneLayer() {
+        // Every vertex of a flat sheet lies within reach of the triangles round it, in
+        // their plane: none of them is another layer.
+        const World w = *makeScene("press");
+        SelfContact contact;
+        std::vector<double> inverse(static_cast<std::size_t>(w.sheet.verts.size()), 1.0);
+        contact.find(w.sheet, inverse, kThickness, std::vector<double>(inverse.size(), 0.005),
+                     0.0045);
+        QCOMPARE(contact.pairs().size(), std::size_t{0});
+    }
+
+    void aLayerThrownOntoAnotherRestsOnIt() {
+        // The far half of the sheet, bent over the near half, is thrown down onto it:
+        // without self-contact it goes through and lies in the desk with the lower
+        // layer; with it, it lies a thickness above, at any speed, and the paper does
+        // not stretch for it.
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
+        for (const bool touching : {false, true}) {
+            for (const double speed : {0.0, 1.0, 10.0}) {
+                UFold u = bentOverItself(speed, touching);
+                const double t = u.world.params.material.thickness;
+                Simulation sim(std::move(u.world));
+                double lowest = 1.0, stretch = 0.0;
+                for (int k = 0; k < 240; ++k) {
+                    QCOMPARE(sim.step(), StepStatus::Ok);
+                    stretch = std::max(stretch, computeStats(sim.world().sheet).maxStretch);
+                    for (Index i : u.upper)
+                        lowest = std::min(lowest, sim.world().sheet.verts.x[i].y());
+                }
+                int inTheDesk = 0;
+                for (Index i : u.upper)
+                    if (sim.world().sheet.verts.x[i].y() < 0.5 * t) ++inTheDesk;
+                qInfo("self-contact %s, thrown at %.0f m/s: lowest %.3f mm, %d of %zu vertices "
+                      "of the upper layer in the lower one after 1 s, stretch %.3f %%",
+                      touching ? "on" : "off", speed, 1e3 * lowest, inTheDesk, u.upper.size(),
+                      100.0 * stretch);
+                if (touching) {
+                    // The projection after the sub-steps' contacts may leave a vertex a
+                    // little way into the thickness under it, never through.
+                    QVERIFY(lowest > 0.8 * t);
+                    QCOMPARE(inTheDesk, 0);
+                    QVERIFY(stretch < kStretchBound);
+                } else {
+                    QVERIFY(inTheDesk > static_cast<int>(u.upper.size()) / 2);
+                }
+            }
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSelfContact)
+#include "test_self_contact.moc"
