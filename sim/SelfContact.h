@@ -2,6 +2,7 @@
 
 #include "Sheet.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -17,10 +18,10 @@ class SelfContact {
   public:
     // Finds the vertex-triangle pairs that can touch before a vertex has moved farther
     // than its `allowance` from where it is now: a free vertex within the thickness plus
-    // its own and the triangle's corners' allowances of a triangle. Triangles the vertex
-    // is a corner of are not its contacts, nor paper within `apart` of it in the
-    // material. Pairs are in triangle order, then the hash's (a sorted vector's): the
-    // same sheet gives the same pairs in the same order.
+    // its own and the triangle's corners' allowances of a triangle. A triangle with a
+    // corner in the ring of triangles round the vertex is its own paper bending, not a
+    // contact, nor is paper within `apart` of it in the material. Pairs are in triangle order, then
+    // the hash's (a sorted vector's): the same sheet gives the same pairs in the same order.
     void find(const Sheet& sheet, const std::vector<double>& inverseMass, double thickness,
               const std::vector<double>& allowance, double apart);
     // Pushes every pair that is closer than the thickness apart back to it, the vertex
@@ -33,7 +34,8 @@ class SelfContact {
                  double kineticFriction, bool withFriction, double maxSeparation);
     struct Pair {
         Index vertex, triangle;
-        double side; // +1: on the side the triangle's normal points to
+        std::array<Index, 3> corners; // the triangle's, as it was found
+        double side;                  // +1: on the side the triangle's normal points to
         // How far the two could have moved toward each other since they were found: a
         // vertex deeper than this on the other side came round the layer's edge, not
         // through it, and is left there.
@@ -45,7 +47,6 @@ class SelfContact {
     std::size_t crossed(const std::vector<Vec3>& x) const;
 
   private:
-    const std::vector<Triangle>* tris_ = nullptr;
     std::vector<Pair> pairs_;
     double thickness_ = 0.0;
     std::vector<Index> seenBy_; // the triangle that tried the vertex last

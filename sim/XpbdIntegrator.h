@@ -143,8 +143,6 @@ class XpbdIntegrator final : public Integrator {
     bool resolvesContacts() const override { return true; }
     void setContacts(const ContactScene& scene) override { contacts_ = scene; }
     bool asleep() const override { return asleep_; }
-    // The layers that could touch in the last step; exposed for tests and probes.
-    const SelfContact& selfContact() const { return selfContact_; }
     // The fast projection's work since this integrator was made: Newton iterations that
     // factored their system (each with its own ordering, factorisation and solve).
     struct ProjectionWork {
