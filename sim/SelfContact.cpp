@@ -9,9 +9,9 @@ namespace pf {
 
 namespace {
 
-// A box that covers more cells than this is a blown-up triangle's or vertex's; it is
-// left out.
-constexpr std::int64_t kMaxCellsPerBox = 4096;
+// A triangle whose box covers more cells than this (32 a side: a triangle some 20 times
+// the mesh's mean edge across) has blown up; it is left out.
+constexpr std::int64_t kMaxCellsPerBox = 32768;
 // How far out of a triangle (in its barycentric coordinates) a vertex's foot may lie and
 // still be held by it: a foot on the edge between two triangles of a layer is held by
 // both (the pairs are found by distance, so both are there).
@@ -50,14 +50,14 @@ void SelfContact::find(const Sheet& sheet, const std::vector<double>& inverseMas
     // The free vertices hashed by the cells of their boxes (each as far round it as it
     // may move); each triangle looks in the cells its own box, grown by the thickness and
     // as far as its corners may move, covers.
-    // Cells of the mesh's size, or a quarter of the widest allowance: no box then spans
-    // more than ten cells a side, and none is left out but a blown-up one (with the
-    // mesh's size alone, a vertex at 1 m/s on a sheet of 1 mm edges covered 3,000 cells).
+    // Cells of the mesh's size, or a quarter of the widest allowance (pins that carry
+    // the paper included): a vertex's box then spans at most nine cells a side, and a
+    // triangle's at most nine more than its own width (with the mesh's size alone, a
+    // vertex at 1 m/s on a sheet of 1 mm edges covered about 7,000 cells).
     double edgeSum = 0.0;
     for (const Triangle& t : sheet.tris) edgeSum += (X[t.v[0]] - X[t.v[1]]).norm();
     double widest = 0.0;
-    for (Index v = 0; v < nv; ++v)
-        if (inverseMass[v] != 0.0) widest = std::max(widest, allowance[v]);
+    for (Index v = 0; v < nv; ++v) widest = std::max(widest, allowance[v]);
     const double cell = std::max(edgeSum / nt, 0.25 * (widest + thickness));
     if (!std::isfinite(cell) || !(cell > 0.0)) return;
     // (Offset by half a cell, so that paper lying on the desk at y = 0 lies in one layer

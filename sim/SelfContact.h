@@ -11,7 +11,7 @@ namespace pf {
 // Contact of the paper with itself: layers of a fold or a crumple lie on each other,
 // a sheet's thickness apart, and slide on each other with paper-on-paper friction.
 // Each vertex is kept on the side of every triangle it was on when the step began,
-// so it cannot pass through a layer however far it moves within the step (the pairs
+// so it cannot pass through a layer it could reach within the step (the pairs
 // are found once per step, for everything that can meet in it, from the state alone:
 // a run resumed from a file finds the same).
 class SelfContact {
