@@ -7,7 +7,7 @@
 #                              export thread, the viewport, and the step on several
 #                              threads): what CI runs, to stay within its time
 # Other arguments go to ctest, e.g. `scripts/tsan.sh -R test_editor`
-# (both halves of the editor suite, test_editor.1 and .2).
+# (every share of the editor suite: test_editor.1, .2 and, under ThreadSanitizer, .3).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 targets=()
@@ -22,10 +22,8 @@ for arg in "$@"; do
         ctest_args+=("$arg")
     fi
 done
-# File by file (no unity build): CI's one build where each source of the libraries
-# compiles on its own, so a missing include shows here.
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DPAPERFOLD_SANITIZER=thread -DPAPERFOLD_WERROR=ON -DCMAKE_UNITY_BUILD=OFF
+    -DPAPERFOLD_SANITIZER=thread -DPAPERFOLD_WERROR=ON
 cmake --build build-tsan "${targets[@]}"
 # halt_on_error: a report fails its test (exit 66) instead of scrolling past.
 export TSAN_OPTIONS="suppressions=$PWD/tests/tsan.supp halt_on_error=1 second_deadlock_stack=1 report_signal_unsafe=0"

@@ -1287,7 +1287,10 @@ class TestEditor : public QObject {
         QVERIFY(step);
         window->action("play")->setChecked(true);
         QTest::qWait(1500);
-        QVERIFY2(!step->text().contains(QStringLiteral("real time")), qPrintable(step->text()));
+        // The default sheet keeps real time, but not in a sanitized build (under
+        // ThreadSanitizer a step took 88 ms: 0.06× real time).
+        if (PAPERFOLD_TEST_SLOWDOWN == 1)
+            QVERIFY2(!step->text().contains(QStringLiteral("real time")), qPrintable(step->text()));
         window->action("new.drape")->trigger();
         // The exact step at the most steps a second: 32 times the work of 240 a second,
         // behind on any machine.
