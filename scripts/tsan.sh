@@ -15,8 +15,8 @@ ctest_args=()
 for arg in "$@"; do
     if [ "$arg" = "--threads" ]; then
         targets=(--target test_editor test_viewport test_determinism)
-        # Two at a time: the editor suite's two halves first, the viewport and the step's
-        # worker threads after them.
+        # Two at a time: the step's worker threads and the editor suite's three shares
+        # first (tests/CMakeLists.txt orders them by COST), the viewport last.
         ctest_args+=(-R '^(test_editor\.[0-9]+|test_viewport|test_determinism_threads)$' -j2)
     else
         ctest_args+=("$arg")
