@@ -171,8 +171,8 @@ class TestSimulateCli : public QObject {
     // paper's jacobi, which breaks a free sheet and shares every pass among threads).
     void threadsGiveTheSameState() {
         QStringList hashes;
-        // Sanitized builds step 60 (275 hinges by then; 200 steps three times took 29 s of
-        // CI under ASan).
+        // Sanitized builds step 60 (275 hinges by then; 200 steps three times took 29 s
+        // under ASan).
         const QString steps =
             PAPERFOLD_TEST_SLOWDOWN > 1 ? QStringLiteral("60") : QStringLiteral("200");
         for (const char* threads : {"1", "2", "3"}) {
