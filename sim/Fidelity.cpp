@@ -210,9 +210,19 @@ double cantileverAngle(const FidelityOptions& o, const Material& material, doubl
             w.sheet.verts.pinned[i] = 1;
         }
     w.script.pins.push_back(clamp);
+    // Loaded slowly, as the standard test is (the strip slid over the edge at 2 mm/s,
+    // ASTM D1388): gravity rises smoothly to g over `ramp`, then holds. Let go flat,
+    // the strip swings down with no air to slow it, and tissue passed its yield
+    // curvature at the clamp in that first swing and set at 73.6° where Peirce says
+    // 60.5° (docs/material.md, "Cantilever").
+    const double ramp = quick ? 1.5 : 2.0;
+    const double g = w.params.gravity;
     Simulation sim(w);
-    const int steps = stepsFor(w, quick ? 2.0 : 4.0);
-    for (int k = 0; k < steps && sim.step() == StepStatus::Ok; ++k) {
+    const int steps = stepsFor(w, ramp + (quick ? 1.0 : 2.0));
+    for (int k = 0; k < steps; ++k) {
+        const double u = std::min(1.0, (k + 1) * w.params.dt / ramp);
+        sim.world().params.gravity = g * u * u * (3.0 - 2.0 * u);
+        if (sim.step() != StepStatus::Ok) break;
     }
     const Sheet& s = sim.world().sheet;
     Vec3 tip = Vec3::Zero(), edge = Vec3::Zero();

@@ -694,21 +694,26 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         for (Index i = 0; i < nv; ++i)
             if (!V.pinned[i]) V.v[i] = Vec3::Zero();
     };
+    const Vec3 g =
+        params.gravity * Vec3(std::sin(params.gravityTilt), -std::cos(params.gravityTilt), 0.0);
     asleep_ = sleepy();
     if (asleep_) {
-        if (!mustWake(sheet)) {
+        // A sheet at rest under one gravity is not at rest under another: a load ramped
+        // up from nothing (the cantilever check) left a stiff strip asleep, flat, under
+        // the whole of it. A sheet loaded asleep from a file has no earlier step.
+        if (std::isnan(gravityIntegrated_.x())) gravityIntegrated_ = g;
+        if (!mustWake(sheet) && g == gravityIntegrated_) {
             stopFreeVertices();
             return;
         }
         asleep_ = false;
         sheet.paper.wake();
     }
+    gravityIntegrated_ = g;
 
     const int n = std::max(1, params.substeps);
     const double h = params.dt / n;
     const double h2 = h * h;
-    const Vec3 g =
-        params.gravity * Vec3(std::sin(params.gravityTilt), -std::cos(params.gravityTilt), 0.0);
     const Material& mat = params.material;
     w_.resize(static_cast<std::size_t>(nv));
     for (Index i = 0; i < nv; ++i) w_[i] = V.pinned[i] || !(V.m[i] > 0.0) ? 0.0 : 1.0 / V.m[i];

@@ -2,9 +2,9 @@
 // the xpbd integrator with office paper: a fold pressed past the yield curvature stays
 // while a gentle bend springs back; a tool pushing a loose sheet across the desk drags
 // it whole, and slides over one whose far edge is held; a sleeping sheet runs no break
-// pass; a finer sheet than the scorecard's stays within the stretch bound where pins or
-// the tool hold it; where pins or a hand hold it up, the projection converges in about
-// one Newton iteration a step.
+// pass and wakes when gravity changes; a finer sheet than the scorecard's stays within the stretch
+// bound where pins or the tool hold it; where pins or a hand hold it up, the projection converges
+// in about one Newton iteration a step.
 #include "EditSession.h"
 #include "Scenes.h"
 #include "SheetBuilder.h"
@@ -233,6 +233,30 @@ class TestPaperBehaviour : public QObject {
               static_cast<long>(breaks), static_cast<long>(computeStats(sim.world().sheet).breaks));
         QVERIFY(sim.asleep());
         QCOMPARE(computeStats(sim.world().sheet).breaks, breaks);
+    }
+
+    void aSleepingSheetWakesWhenGravityChanges() {
+        // A load that changes is not rest: the strip asleep in weightlessness falls as
+        // soon as gravity is turned on (the cantilever check ramps its load up from
+        // nothing, and a stiff strip that slept through it stayed flat).
+        Simulation sim(foldedStrip(0.0));
+        int k = 0;
+        while (!sim.asleep() && k < 2400) {
+            QCOMPARE(sim.step(), StepStatus::Ok);
+            ++k;
+        }
+        QVERIFY2(sim.asleep(), "the weightless strip never came to rest");
+        const double before = centreOfMass(sim.world().sheet).y();
+        sim.world().params.gravity = 9.81;
+        constexpr int kSteps = 60; // 0.25 s
+        for (int s = 0; s < kSteps; ++s) QCOMPARE(sim.step(), StepStatus::Ok);
+        const double t = kSteps * sim.world().params.dt;
+        const double fell = before - centreOfMass(sim.world().sheet).y();
+        qInfo("asleep after %d steps; fell %.2f mm in %.2f s (free fall %.2f mm)", k, 1e3 * fell, t,
+              1e3 * 0.5 * 9.81 * t * t);
+        QVERIFY(!sim.asleep());
+        QCOMPARE_GE(fell, 0.99 * 0.5 * 9.81 * t * t);
+        QCOMPARE_LE(fell, 1.01 * 0.5 * 9.81 * t * t);
     }
 };
 
