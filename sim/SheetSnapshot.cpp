@@ -16,6 +16,24 @@ bool drawsTheSame(const SheetSnapshot& a, const SheetSnapshot& b) {
            a.groundHeight == b.groundHeight;
 }
 
+void pinnedAndHeld(const Simulation& sim, std::vector<Index>& pinned, std::vector<Index>& held) {
+    const World& world = sim.world();
+    const Sheet& s = world.sheet;
+    pinned.clear();
+    held.clear();
+    // A hand that lets go (the Fold tool's carry, the Grab tool's grip) is not a pin: its
+    // vertices are marked apart (a user could not tell a carried flap's crosses, or the
+    // grabbed vertex's, from the pins they had set).
+    std::vector<std::uint8_t> byHand(static_cast<std::size_t>(s.verts.size()), 0);
+    for (const PinGroup& g : world.script.pins)
+        if (std::isfinite(g.release) && world.time < g.release)
+            for (Index i : g.vertices)
+                if (i >= 0 && i < s.verts.size()) byHand[i] = 1;
+    if (const Index h = sim.heldVertex(); h >= 0 && h < s.verts.size()) byHand[h] = 1;
+    for (Index i = 0; i < s.verts.size(); ++i)
+        if (s.verts.pinned[i]) (byHand[i] ? held : pinned).push_back(i);
+}
+
 SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds) {
     const World& world = sim.world();
     const Sheet& s = world.sheet;
@@ -32,17 +50,7 @@ SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds) {
     snap.strain.resize(static_cast<std::size_t>(S.size()));
     snap.recentlyBroken.assign(static_cast<std::size_t>(S.size()), 0);
     snap.vertexStrain.assign(x.size(), 0.0f);
-    // A hand that lets go (the Fold tool's carry, the Grab tool's grip) is not a pin: its
-    // vertices are marked apart (a user could not tell a carried flap's crosses, or the
-    // grabbed vertex's, from the pins they had set).
-    std::vector<std::uint8_t> byHand(static_cast<std::size_t>(s.verts.size()), 0);
-    for (const PinGroup& g : world.script.pins)
-        if (std::isfinite(g.release) && world.time < g.release)
-            for (Index i : g.vertices)
-                if (i >= 0 && i < s.verts.size()) byHand[i] = 1;
-    if (const Index held = sim.heldVertex(); held >= 0 && held < s.verts.size()) byHand[held] = 1;
-    for (Index i = 0; i < s.verts.size(); ++i)
-        if (s.verts.pinned[i]) (byHand[i] ? snap.held : snap.pinned).push_back(i);
+    pinnedAndHeld(sim, snap.pinned, snap.held);
     for (Index k = 0; k < S.size(); ++k) {
         const Index a = S.a[k], b = S.b[k];
         snap.springEnds[k] = {a, b};

@@ -34,6 +34,10 @@ struct SheetSnapshot {
 // Whether a and b draw the same picture: everything but the clock (time, step, serial).
 bool drawsTheSame(const SheetSnapshot& a, const SheetSnapshot& b);
 
+// The vertices that stand still, split as a snapshot shows them: `pinned` by pins,
+// `held` by a hand that lets go.
+void pinnedAndHeld(const Simulation& sim, std::vector<Index>& pinned, std::vector<Index>& held);
+
 // `recentSeconds`: how far back a break counts as recent. The break probabilities are
 // the ones the simulation's last step drew (Simulation::breakProbabilities).
 SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds = 1.0);

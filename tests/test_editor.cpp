@@ -499,11 +499,20 @@ class TestEditor : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(atRest(), 120000);
         QTest::qWait(500);
         const std::int64_t before = worldOf(*window)->stepCount;
+        const auto published = window->simulation()->latestSnapshot();
         frames.clear();
         QTest::qWait(1000);
         QVERIFY(worldOf(*window)->stepCount > before); // it was playing all along
         const auto still = frames.count();
         QVERIFY2(still <= 1, qPrintable(QString::number(still)));
+        // Nor made anew: the picture shown is published again, with the clock running.
+        QVERIFY(window->simulation()->latestSnapshot() == published);
+        QVERIFY(window->simulation()->status().step > before);
+        // The tool hovering over the sleeping sheet is a new picture.
+        moveMouse(window->viewport(), viewportCentre(*window));
+        QTRY_VERIFY_WITH_TIMEOUT(window->simulation()->latestSnapshot() != published,
+                                 kSignalWaitMs);
+        QVERIFY(window->simulation()->latestSnapshot()->sphere.hovering);
         // The status bar counts frames drawn, not snapshots published (it read 59 fps
         // over a resting sheet that was not drawn at all).
         // (At most one frame in the last half second: 2 fps.)

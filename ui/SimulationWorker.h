@@ -66,6 +66,12 @@ class SimulationWorker : public QObject {
     void frame();
     void advance(int steps);
     void publish(double stepSeconds);
+    // Whether the snapshot last published still shows the sheet: it sleeps, no edit has
+    // come since, and nothing a sleeping step can change on its own (the tool, the pins, a
+    // hand's grip, the positions) has changed.
+    bool shownStillShows() const;
+    // Publishes the snapshot shown again, with the status's clock brought up to date.
+    void republish(double stepSeconds);
     void announce(const std::optional<EditSession::StrokeEnd>& ended);
 
     EditSession session_;
@@ -75,6 +81,13 @@ class SimulationWorker : public QObject {
     QElapsedTimer sinceTick_; // reset by a tick while paused: the first tick of play is a frame
     double stepCost_ = 0.0;   // wall seconds a step has taken lately (FramePacer)
     bool playing_ = true;
+    // The last snapshot and status published, the velocities they were made from, and
+    // whether an edit has come since (an edit may change what no comparison covers; a
+    // command that only reads, as Save's copy of the world, is not one).
+    std::shared_ptr<const SheetSnapshot> shown_;
+    SimulationStatus shownStatus_;
+    std::vector<Vec3> shownVelocities_;
+    bool editedSinceShown_ = true;
 };
 
 } // namespace pf

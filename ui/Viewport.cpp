@@ -133,7 +133,8 @@ void Viewport::releaseGl() {
 // kept a core 85 % busy under software GL. A snapshot that draws the same picture as the
 // one shown replaces it without a repaint.
 void Viewport::setSnapshot(std::shared_ptr<const SheetSnapshot> snapshot) {
-    const bool same = snapshot_ && snapshot && drawsTheSame(*snapshot_, *snapshot);
+    const bool same =
+        snapshot_ && snapshot && (snapshot_ == snapshot || drawsTheSame(*snapshot_, *snapshot));
     snapshot_ = std::move(snapshot);
     if (!same) window_->update();
 }
