@@ -33,8 +33,9 @@ class Integrator {
     // does not collide again after it); setContacts() is called before each advance().
     virtual bool resolvesContacts() const { return false; }
     virtual void setContacts(const ContactScene&) {}
-    // The simulation's threads and stars (refreshed before each advance()). An integrator
-    // that can use them keeps them; it works on one thread without.
+    // The simulation's threads and stars (refreshed before each advance(); none after a
+    // step the sheet slept through, which only xpbd, which reads no stars, does). An
+    // integrator that can use them keeps them; it works on one thread without.
     virtual void lendWorkers(const StepWorkers&) {}
     // True while the sheet sleeps: at rest, untouched, and not integrated.
     virtual bool asleep() const { return false; }

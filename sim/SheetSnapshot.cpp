@@ -5,15 +5,18 @@
 
 namespace pf {
 
+bool toolDrawsTheSame(const SphereTool& a, const SphereTool& b) {
+    return a.center == b.center && a.radius == b.radius && a.active == b.active &&
+           a.hovering == b.hovering;
+}
+
 bool drawsTheSame(const SheetSnapshot& a, const SheetSnapshot& b) {
     return a.x == b.x && a.X == b.X && a.tris == b.tris && a.springEnds == b.springEnds &&
            a.springKind == b.springKind && a.breakable == b.breakable &&
            a.breakProbability == b.breakProbability && a.strain == b.strain &&
            a.recentlyBroken == b.recentlyBroken && a.vertexStrain == b.vertexStrain &&
-           a.pinned == b.pinned && a.held == b.held && a.sphere.center == b.sphere.center &&
-           a.sphere.radius == b.sphere.radius && a.sphere.active == b.sphere.active &&
-           a.sphere.hovering == b.sphere.hovering && a.groundEnabled == b.groundEnabled &&
-           a.groundHeight == b.groundHeight;
+           a.pinned == b.pinned && a.held == b.held && toolDrawsTheSame(a.sphere, b.sphere) &&
+           a.groundEnabled == b.groundEnabled && a.groundHeight == b.groundHeight;
 }
 
 void pinnedAndHeld(const Simulation& sim, std::vector<Index>& pinned, std::vector<Index>& held) {

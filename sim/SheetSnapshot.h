@@ -31,6 +31,9 @@ struct SheetSnapshot {
     std::uint64_t serial = 0;
 };
 
+// Whether the tool is drawn the same: where, how large, pressed or hovering.
+bool toolDrawsTheSame(const SphereTool& a, const SphereTool& b);
+
 // Whether a and b draw the same picture: everything but the clock (time, step, serial).
 bool drawsTheSame(const SheetSnapshot& a, const SheetSnapshot& b);
 

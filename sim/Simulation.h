@@ -78,7 +78,8 @@ class Simulation {
     std::unique_ptr<Integrator> integrator_;
     std::string integratorName_;
     std::unique_ptr<WorkerPool> pool_ = std::make_unique<WorkerPool>(0);
-    // Current for the sheet from the start of each step's integration. On the heap, like
+    // Current for the sheet from the start of each step's integration, except in a step
+    // after one the sheet slept through (then from its break pass on). On the heap, like
     // the pool, so that what the integrator was lent stays put when a Simulation moves.
     std::unique_ptr<VertexStars> stars_ = std::make_unique<VertexStars>();
     HingeScratch hingeScratch_;

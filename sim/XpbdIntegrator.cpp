@@ -696,20 +696,22 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     };
     const Vec3 g =
         params.gravity * Vec3(std::sin(params.gravityTilt), -std::cos(params.gravityTilt), 0.0);
+    // A sheet at rest under one gravity is not at rest under another: a load ramped up
+    // from nothing (the cantilever check) left a stiff strip asleep, flat, under the
+    // whole of it. So a change wakes the sheet and, while it goes on, keeps it awake. A
+    // sheet's first step here (a new one, or one loaded asleep from a file) has no
+    // earlier gravity to differ from.
+    const bool gravityChanged = lastGravity_ && *lastGravity_ != g;
+    lastGravity_ = g;
     asleep_ = sleepy();
     if (asleep_) {
-        // A sheet at rest under one gravity is not at rest under another: a load ramped
-        // up from nothing (the cantilever check) left a stiff strip asleep, flat, under
-        // the whole of it. A sheet loaded asleep from a file has no earlier step.
-        if (std::isnan(gravityIntegrated_.x())) gravityIntegrated_ = g;
-        if (!mustWake(sheet) && g == gravityIntegrated_) {
+        if (!mustWake(sheet) && !gravityChanged) {
             stopFreeVertices();
             return;
         }
         asleep_ = false;
         sheet.paper.wake();
     }
-    gravityIntegrated_ = g;
 
     const int n = std::max(1, params.substeps);
     const double h = params.dt / n;
@@ -991,7 +993,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     const bool quiet = stayedWithin(V, stepStart_, kQuietSpeed * params.dt);
     const bool still = stayedWithin(V, paper.stillFrom, kStillReach);
     // (Only asked of a sheet that kept still: it looks at every vertex and the tool.)
-    const bool undisturbed = (quiet || still) && !mustWake(sheet);
+    const bool undisturbed = (quiet || still) && !gravityChanged && !mustWake(sheet);
     paper.quietSteps = quiet && undisturbed ? paper.quietSteps + 1 : 0;
     if (still && undisturbed) {
         ++paper.stillSteps;

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace pf {
@@ -241,8 +242,8 @@ class XpbdIntegrator final : public Integrator {
     std::vector<Vec3> bestX_, bestV_; // projectStretch's least stretched state
     double longestEdge_ = 0.0;        // rest length, m
     bool asleep_ = false;
-    // The gravity of the last step integrated (NaN before the first): a change wakes.
-    Vec3 gravityIntegrated_ = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+    // The gravity of the last step (none before the first): a change wakes the sheet.
+    std::optional<Vec3> lastGravity_;
 };
 
 } // namespace pf

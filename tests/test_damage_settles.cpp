@@ -108,6 +108,50 @@ class TestDamageSettles : public QObject {
                 QVERIFY(s.materialDistance(s.springs.a[k], s.springs.b[k]) >= spacing);
         }
     }
+
+    void aSheetWokenAfterAnEditBreaksAsAFreshOne() {
+        // A step after one the sheet slept through leaves the vertex stars as they were
+        // (Simulation::step); the break pass must still see the mesh an edit made
+        // meanwhile. So: `compress` to rest, its newest break recovered (as Undo does)
+        // while it sleeps, its edges pushed on again; step on, and step a Simulation
+        // started from the same state beside it. Eq. 10 draws the same probabilities in
+        // both, bit for bit, from the first step (stars left stale there gave others).
+        World w = *makeScene("compress");
+        w.params.phi = 0.0; // as fragile as Eq. 10 allows
+        Simulation slept(std::move(w));
+        int k = 0;
+        while (!slept.asleep() && k < 2400) {
+            QCOMPARE(slept.step(), StepStatus::Ok);
+            ++k;
+        }
+        QVERIFY2(slept.asleep(), "compress never came to rest");
+        Sheet& sheet = slept.world().sheet;
+        Index newest = kNone;
+        for (Index e = 0; e < static_cast<Index>(sheet.events.size()); ++e)
+            if (sheet.events[e].active && sheet.events[e].kind == EventKind::Break &&
+                canRecover(sheet, e))
+                newest = e;
+        QVERIFY2(newest != kNone, "compress made no break to undo");
+        const Index vertices = sheet.verts.size();
+        QVERIFY(recoverEvent(sheet, newest));
+        QVERIFY(sheet.verts.size() < vertices);
+        for (PinGroup& g : slept.world().script.pins) g.until = slept.world().time + 0.5;
+        Simulation fresh(slept.world());
+        float drawn = 0.0f;
+        for (int s = 0; s < 120; ++s) {
+            QCOMPARE(slept.step(), StepStatus::Ok);
+            QCOMPARE(fresh.step(), StepStatus::Ok);
+            QCOMPARE(stateHash(slept.world().sheet), stateHash(fresh.world().sheet));
+            const std::vector<float>& p = slept.breakProbabilities();
+            QVERIFY2(p == fresh.breakProbabilities(), qPrintable(QString::number(s)));
+            for (float x : p) drawn = std::max(drawn, x);
+        }
+        qInfo("asleep after %d steps; the largest probability drawn after the edit %.3g", k,
+              double(drawn));
+        QVERIFY(!slept.asleep()); // the push woke it
+        QVERIFY(drawn > 0.0f);    // and Eq. 10 drew
+        QCOMPARE(breakEvents(slept), breakEvents(fresh));
+    }
 };
 
 QTEST_APPLESS_MAIN(TestDamageSettles)

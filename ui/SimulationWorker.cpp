@@ -4,6 +4,7 @@
 #include "SimulationChannel.h"
 
 #include <QElapsedTimer>
+#include <algorithm>
 #include <cmath>
 
 namespace pf {
@@ -174,12 +175,12 @@ bool SimulationWorker::shownStillShows() const {
     const Simulation& sim = session_.simulation();
     const World& w = sim.world();
     if (!shown_ || editedSinceShown_ || !sim.asleep()) return false;
-    // Recent breaks fade with the clock.
-    if (shownStatus_.breaksLastSecond != 0) return false;
     const SheetSnapshot& s = *shown_;
-    const SphereTool &was = s.sphere, &is = w.sphere;
-    if (was.center != is.center || was.radius != is.radius || was.active != is.active ||
-        was.hovering != is.hovering || s.groundEnabled != w.groundEnabled ||
+    // Recent breaks fade with the clock (read from the picture: the status counts a
+    // second of steps rounded, the picture rounded up).
+    if (std::ranges::find(s.recentlyBroken, std::uint8_t{1}) != s.recentlyBroken.end())
+        return false;
+    if (!toolDrawsTheSame(s.sphere, w.sphere) || s.groundEnabled != w.groundEnabled ||
         s.groundHeight != w.groundHeight)
         return false;
     const Sheet& sheet = w.sheet;
@@ -192,24 +193,26 @@ bool SimulationWorker::shownStillShows() const {
     return pinned == s.pinned && held == s.held;
 }
 
-void SimulationWorker::republish(double stepSeconds) {
-    const World& w = session_.world();
-    SimulationStatus st = shownStatus_;
-    st.step = w.stepCount;
+void SimulationWorker::setClock(SimulationStatus& st, double stepSeconds) const {
+    st.step = session_.world().stepCount;
     st.stepSeconds = stepSeconds;
     st.threads = session_.simulation().threads();
     st.playing = playing_;
     st.pace = pacer_.pace();
     st.folding = session_.folding();
-    st.asleep = true;
+    st.asleep = session_.simulation().asleep();
+}
+
+void SimulationWorker::republish(double stepSeconds) {
+    SimulationStatus st = shownStatus_;
+    setClock(st, stepSeconds);
     emit published(shown_, st);
 }
 
 void SimulationWorker::publish(double stepSeconds) {
     const World& w = session_.world();
     SimulationStatus st;
-    st.step = w.stepCount;
-    st.stepSeconds = stepSeconds;
+    setClock(st, stepSeconds);
     st.vertices = w.sheet.verts.size();
     st.springs = w.sheet.springs.size();
     const SheetStats stats = computeStats(w.sheet);
@@ -219,11 +222,6 @@ void SimulationWorker::publish(double stepSeconds) {
     st.breaksLastSecond = static_cast<int>(breaksSince(w.sheet, w.stepCount - secondOfSteps));
     st.maxStretch = stats.maxStretch;
     st.rmsStretch = stats.rmsStretch;
-    st.threads = session_.simulation().threads();
-    st.playing = playing_;
-    st.pace = pacer_.pace();
-    st.folding = session_.folding();
-    st.asleep = session_.simulation().asleep();
     st.sheetHash = editedStateHash(w.sheet);
     shown_ = std::make_shared<const SheetSnapshot>(makeSnapshot(session_.simulation()));
     shownStatus_ = st;

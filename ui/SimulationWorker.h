@@ -70,6 +70,9 @@ class SimulationWorker : public QObject {
     // come since, and nothing a sleeping step can change on its own (the tool, the pins, a
     // hand's grip, the positions) has changed.
     bool shownStillShows() const;
+    // The status's clock: the step, its cost, and what the worker and the session are
+    // doing (playing, pace, folding, asleep).
+    void setClock(SimulationStatus& status, double stepSeconds) const;
     // Publishes the snapshot shown again, with the status's clock brought up to date.
     void republish(double stepSeconds);
     void announce(const std::optional<EditSession::StrokeEnd>& ended);
