@@ -52,4 +52,12 @@ void holdFarEdge(World& w, int resolution) {
     w.script.pins.push_back(held);
 }
 
+int stepUntilAsleep(Simulation& sim, int maxSteps) {
+    for (int k = 0; k < maxSteps; ++k) {
+        if (sim.asleep()) return k;
+        if (sim.step() != StepStatus::Ok) return -1;
+    }
+    return sim.asleep() ? maxSteps : -1;
+}
+
 } // namespace pf::test

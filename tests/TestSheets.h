@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Sheet.h"
+#include "Simulation.h"
 #include "World.h"
 
 namespace pf::test {
@@ -21,5 +22,9 @@ Sheet makeJitteredSheet(int columns, int rows, unsigned seed);
 // Pins the last row of an A4 sheet built at `resolution` (the edge farthest from the
 // press scene's start) in place for the whole run.
 void holdFarEdge(World& w, int resolution);
+
+// Steps until the sheet sleeps, at most `maxSteps`; returns the steps taken, or -1 if a
+// step failed or the sheet never slept.
+int stepUntilAsleep(Simulation& sim, int maxSteps = 2400);
 
 } // namespace pf::test
