@@ -55,7 +55,7 @@ void holdFarEdge(World& w, int resolution) {
 int stepUntilAsleep(Simulation& sim, int maxSteps) {
     for (int k = 0; k < maxSteps; ++k) {
         if (sim.asleep()) return k;
-        if (sim.step() != StepStatus::Ok) return -1;
+        if (sim.step() != StepStatus::Ok) return kStepFailed;
     }
     return sim.asleep() ? maxSteps : -1;
 }

@@ -23,8 +23,9 @@ Sheet makeJitteredSheet(int columns, int rows, unsigned seed);
 // press scene's start) in place for the whole run.
 void holdFarEdge(World& w, int resolution);
 
-// Steps until the sheet sleeps, at most `maxSteps`; returns the steps taken, or -1 if a
-// step failed or the sheet never slept.
+// Steps until the sheet sleeps, at most `maxSteps`; returns the steps taken, -1 if the
+// sheet never slept, or kStepFailed if a step did not return StepStatus::Ok.
+inline constexpr int kStepFailed = -2;
 int stepUntilAsleep(Simulation& sim, int maxSteps = 2400);
 
 } // namespace pf::test

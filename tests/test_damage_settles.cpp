@@ -114,7 +114,8 @@ class TestDamageSettles : public QObject {
         // A step after one the sheet slept through leaves the vertex stars as they were
         // (Simulation::step); the break pass must still see the mesh an edit made
         // meanwhile. So: `compress` to rest, its newest break recovered (as Undo does)
-        // while it sleeps, its edges pushed on again; step on, and step a Simulation
+        // while it sleeps (which wakes it), its edges pushed on again (which loads it);
+        // step on, and step a Simulation
         // started from the same state beside it. Eq. 10 draws the same probabilities in
         // both, bit for bit, from the first step (stars left stale there gave others).
         // (compress breaks at its own resolution, 19, and not at 11-17, so a sanitized
@@ -124,6 +125,7 @@ class TestDamageSettles : public QObject {
         w.params.phi = 0.0; // as fragile as Eq. 10 allows
         Simulation slept(std::move(w));
         const int k = test::stepUntilAsleep(slept);
+        QVERIFY2(k != test::kStepFailed, "a step failed");
         QVERIFY2(k >= 0, "compress never came to rest");
         Sheet& sheet = slept.world().sheet;
         Index newest = kNone;
@@ -148,7 +150,7 @@ class TestDamageSettles : public QObject {
         }
         qInfo("asleep after %d steps; the largest probability drawn after the edit %.3g", k,
               double(drawn));
-        QVERIFY(!slept.asleep()); // the push woke it
+        QVERIFY(!slept.asleep()); // the edit woke it, the push kept it awake
         QVERIFY(drawn > 0.0f);    // and Eq. 10 drew
         QCOMPARE(breakEvents(slept), breakEvents(fresh));
     }
