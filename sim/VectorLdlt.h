@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SymmetricAmdOrdering.h"
 #include "Types.h"
 
 #include <Eigen/SparseCholesky>
@@ -23,7 +24,7 @@ class VectorLdlt {
     Index size() const { return static_cast<Index>(diagonalInverse_.size()); }
 
   private:
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+    SymmetricLdlt ldlt_;
     std::vector<Index> permutation_;        // row i of b goes to row permutation_[i]
     std::vector<Index> inversePermutation_; // and back
     std::vector<double> diagonalInverse_;   // 1 / D, as Eigen multiplies by it

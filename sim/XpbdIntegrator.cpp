@@ -512,6 +512,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
         }
         const Index na = static_cast<Index>(active_.size());
         dir_.resize(active_.size());
+        ends_.resize(active_.size());
         Eigen::VectorXd c(na);
         // Which active constraints meet at each vertex, with the sign of the vertex in
         // each (+1 for a, -1 for b).
@@ -521,6 +522,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
             const Vec3 d = V.x[k.a] - V.x[k.b];
             const double len = d.norm();
             dir_[e] = d / len;
+            ends_[e] = {k.a, k.b};
             c[static_cast<Index>(e)] = len - k.rest;
             ++incidentStart_[k.a + 1];
             ++incidentStart_[k.b + 1];
@@ -538,29 +540,13 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
             incident_[fill[k.a]++] = {static_cast<Index>(e), 1.0};
             incident_[fill[k.b]++] = {static_cast<Index>(e), -1.0};
         }
-        std::vector<Eigen::Triplet<double>> entries;
-        entries.reserve(8 * active_.size());
-        for (Index i = 0; i < nv; ++i) {
-            if (w_[i] == 0.0) continue;
-            for (Index p = incidentStart_[i]; p < incidentStart_[i + 1]; ++p)
-                for (Index r = incidentStart_[i]; r < incidentStart_[i + 1]; ++r) {
-                    const auto [e, se] = incident_[p];
-                    const auto [f, sf] = incident_[r];
-                    entries.emplace_back(e, f, w_[i] * se * sf * dir_[e].dot(dir_[f]));
-                }
-        }
         // A triangle mesh has more edges than its vertices have free directions where
         // pins hold it, so J W Jᵀ is singular there: a small diagonal term (a
         // compliance) keeps the solve well posed, and a larger one damps the step
         // (kDampedProjectionCompliance).
-        for (std::size_t e = 0; e < active_.size(); ++e) {
-            const StretchConstraint& k = stretch_[active_[e]];
-            entries.emplace_back(static_cast<Index>(e), static_cast<Index>(e),
-                                 compliance * (w_[k.a] + w_[k.b]));
-        }
-        Eigen::SparseMatrix<double> a(na, na);
-        a.setFromTriplets(entries.begin(), entries.end());
-        projection_.compute(a);
+        assembleProjectionSystem(ends_, dir_, w_, incidentStart_, incident_, compliance,
+                                 projectionSystem_);
+        projection_.compute(projectionSystem_);
         if (projection_.info() != Eigen::Success) {
             endAtTheBest();
             return;

@@ -1,8 +1,10 @@
 #pragma once
 
 #include "Integrator.h"
+#include "ProjectionSystem.h"
 #include "SelfContact.h"
 #include "StretchPass.h"
+#include "SymmetricAmdOrdering.h"
 #include "VectorLdlt.h"
 
 #include <Eigen/SparseCholesky>
@@ -236,8 +238,10 @@ class XpbdIntegrator final : public Integrator {
     // Positions and velocities before the Newton step being tried.
     std::vector<Vec3> projectedFrom_, velocityFrom_;
     std::vector<Index> incidentStart_;
-    std::vector<std::pair<Index, double>> incident_;
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> projection_;
+    std::vector<std::pair<Index, Index>> ends_; // each stretched constraint's vertices
+    std::vector<ConstraintAtVertex> incident_;
+    Eigen::SparseMatrix<double> projectionSystem_; // J W Jᵀ + ε, its lower triangle
+    SymmetricLdlt projection_;
     ProjectionWork projectionWork_;
     std::vector<Vec3> bestX_, bestV_; // projectStretch's least stretched state
     double longestEdge_ = 0.0;        // rest length, m

@@ -1,9 +1,11 @@
 // The paper's Jacobi iteration (Eq. 6) against the exact solution of the same system.
 #include "BackwardEulerIntegrator.h"
 #include "ImplicitSystem.h"
+#include "ProjectionSystem.h"
 #include "Rng.h"
 #include "SheetBuilder.h"
 #include "StretchPass.h"
+#include "SymmetricAmdOrdering.h"
 #include "VectorLdlt.h"
 
 #include <QTest>
@@ -37,6 +39,49 @@ std::vector<Vec3> diff(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
     std::vector<Vec3> d(a.size());
     for (std::size_t i = 0; i < a.size(); ++i) d[i] = a[i] - b[i];
     return d;
+}
+
+// The fast projection's matrix for the constraints `ends` at positions x, both ways:
+// every free vertex's d × d block and the compliance summed by Eigen's setFromTriplets
+// (whole), and assembleProjectionSystem (lower triangle).
+struct ProjectionSystems {
+    Eigen::SparseMatrix<double> full, lower;
+};
+ProjectionSystems projectionSystems(const std::vector<std::pair<Index, Index>>& ends,
+                                    const std::vector<Vec3>& x, const std::vector<double>& w,
+                                    double compliance) {
+    const Index nv = static_cast<Index>(x.size()), n = static_cast<Index>(ends.size());
+    std::vector<Vec3> dir(n);
+    for (Index e = 0; e < n; ++e) dir[e] = (x[ends[e].first] - x[ends[e].second]).normalized();
+    std::vector<Index> start(nv + 1, 0);
+    for (const auto& [a, b] : ends) {
+        ++start[a + 1];
+        ++start[b + 1];
+    }
+    for (Index i = 0; i < nv; ++i) start[i + 1] += start[i];
+    std::vector<ConstraintAtVertex> incident(start[nv]);
+    std::vector<Index> fill(start.begin(), start.end() - 1);
+    for (Index e = 0; e < n; ++e) {
+        incident[fill[ends[e].first]++] = {e, 1.0};
+        incident[fill[ends[e].second]++] = {e, -1.0};
+    }
+    std::vector<Eigen::Triplet<double>> entries;
+    for (Index i = 0; i < nv; ++i) {
+        if (w[i] == 0.0) continue;
+        for (Index p = start[i]; p < start[i + 1]; ++p)
+            for (Index r = start[i]; r < start[i + 1]; ++r) {
+                const auto [e, se] = incident[p];
+                const auto [f, sf] = incident[r];
+                entries.emplace_back(e, f, w[i] * se * sf * dir[e].dot(dir[f]));
+            }
+    }
+    for (Index e = 0; e < n; ++e)
+        entries.emplace_back(e, e, compliance * (w[ends[e].first] + w[ends[e].second]));
+    ProjectionSystems systems;
+    systems.full.resize(n, n);
+    systems.full.setFromTriplets(entries.begin(), entries.end());
+    assembleProjectionSystem(ends, dir, w, start, incident, compliance, systems.lower);
+    return systems;
 }
 
 } // namespace
@@ -108,6 +153,87 @@ class TestSolvers : public QObject {
         for (int i = 0; i < n; ++i)
             for (int c = 0; c < 3; ++c) differing += ab[i][c] != product(i, c) ? 1 : 0;
         QCOMPARE(differing, 0);
+    }
+
+    // The fast projection's matrix, written column by column, against every vertex's
+    // d × d block summed by Eigen's setFromTriplets (how the projection assembled it
+    // before, and what the saved sheets and pinned hashes were made with): the same lower
+    // triangle to the bit, with pinned vertices, a constraint pinned at both ends and two
+    // constraints between the same two vertices. And its LDLT, ordered without Eigen's
+    // second Aᵀ + A, orders and solves it exactly as Eigen's default LDLT does.
+    void projectionSystemIsTheTripletSumBitForBit() {
+        SheetSpec spec;
+        spec.columns = 9;
+        spec.rows = 12;
+        const Sheet sheet = buildRectangleSheet(spec);
+        Rng rng(11);
+        const Index nv = sheet.verts.size();
+        std::vector<Vec3> x(nv);
+        std::vector<double> w(nv);
+        for (Index i = 0; i < nv; ++i) {
+            x[i] = sheet.verts.x[i] +
+                   0.003 * Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+            w[i] = rng.uniform() < 0.15 ? 0.0 : 1.0 / (1e-6 * (0.2 + rng.uniform()));
+        }
+        std::vector<std::pair<Index, Index>> ends;
+        for (Index s = 0; s < sheet.springs.size(); ++s)
+            if (sheet.springs.kind[s] == SpringKind::Structural && rng.uniform() < 0.8 &&
+                w[sheet.springs.a[s]] + w[sheet.springs.b[s]] != 0.0)
+                ends.emplace_back(sheet.springs.a[s], sheet.springs.b[s]);
+        QVERIFY(ends.size() > 150);
+        ends.emplace_back(ends[20].second, ends[20].first); // a second edge beside one
+        const std::size_t pinnedEdge = ends.size();
+        for (Index s = 0; s < sheet.springs.size(); ++s)
+            if (sheet.springs.kind[s] == SpringKind::Structural &&
+                w[sheet.springs.a[s]] + w[sheet.springs.b[s]] == 0.0) {
+                ends.emplace_back(sheet.springs.a[s], sheet.springs.b[s]);
+                break;
+            }
+        QCOMPARE(ends.size(), pinnedEdge + 1);
+        const double compliance = 1e-3;
+        const ProjectionSystems both = projectionSystems(ends, x, w, compliance);
+        const Eigen::SparseMatrix<double> expected = both.full.triangularView<Eigen::Lower>();
+        const Eigen::SparseMatrix<double>& lower = both.lower;
+        QVERIFY(lower.isCompressed());
+        QCOMPARE(lower.nonZeros(), expected.nonZeros());
+        int differing = 0;
+        for (Index f = 0; f < lower.cols(); ++f) {
+            QCOMPARE(lower.outerIndexPtr()[f + 1], expected.outerIndexPtr()[f + 1]);
+            for (Index k = lower.outerIndexPtr()[f]; k < lower.outerIndexPtr()[f + 1]; ++k) {
+                differing += lower.innerIndexPtr()[k] != expected.innerIndexPtr()[k] ? 1 : 0;
+                differing += lower.valuePtr()[k] != expected.valuePtr()[k] ? 1 : 0;
+            }
+        }
+        QCOMPARE(differing, 0);
+        // Both vertices of the doubled edge sum into the entry the two edges share, and
+        // the edge pinned at both ends has only its (zero) compliance term.
+        QVERIFY(lower.coeff(static_cast<Index>(pinnedEdge) - 1, 20) != 0.0);
+        QCOMPARE(lower.col(static_cast<Index>(pinnedEdge)).nonZeros(), Eigen::Index(1));
+
+        // The projection never holds an edge pinned at both ends (its pivot is zero).
+        ends.pop_back();
+        const ProjectionSystems held = projectionSystems(ends, x, w, compliance);
+        const Index n = static_cast<Index>(ends.size());
+        Eigen::VectorXd c(n);
+        for (Index e = 0; e < n; ++e) c[e] = 1e-4 * (rng.uniform() - 0.5);
+        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> eigen(held.full);
+        SymmetricLdlt ours(held.lower);
+        QCOMPARE(eigen.info(), Eigen::Success);
+        QCOMPARE(ours.info(), Eigen::Success);
+        int moved = 0;
+        for (Index e = 0; e < n; ++e) {
+            differing += ours.permutationP().indices()[e] != eigen.permutationP().indices()[e];
+            moved += eigen.permutationP().indices()[e] != e ? 1 : 0;
+        }
+        QCOMPARE(differing, 0);
+        QVERIFY(moved > n / 2); // a real ordering, not the identity
+        const Eigen::VectorXd expectedLambda = eigen.solve(c), lambda = ours.solve(c);
+        for (Index e = 0; e < n; ++e) differing += lambda[e] != expectedLambda[e] ? 1 : 0;
+        QCOMPARE(differing, 0);
+        // And it solves the system.
+        const double residual =
+            (held.full.selfadjointView<Eigen::Lower>() * lambda - c).norm() / c.norm();
+        QVERIFY2(residual < 1e-8, qPrintable(QString::number(residual)));
     }
 
     // The xpbd sub-steps' stretch pass takes each colour in blocks, with the square roots
