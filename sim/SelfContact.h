@@ -57,6 +57,10 @@ class SelfContact {
         Index begin = 0, end = 0; // the cell's run in cells_; end 0: an empty slot
     };
     std::vector<Slot> slots_;
+    // resolve(): when each vertex last moved, by a clock that ticks at every move and
+    // every normal worked out.
+    std::vector<std::uint64_t> movedAt_;
+    std::uint64_t clock_ = 0;
     // The triangles round each vertex, vertex by vertex.
     std::vector<Index> ringStart_, ring_, ringFill_;
 };

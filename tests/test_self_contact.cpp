@@ -109,6 +109,40 @@ class TestSelfContact : public QObject {
         QVERIFY(x[0].y() < 0.0); // the lower layer gave way too
     }
 
+    // resolve() works a triangle's normal out once for its run of pairs, and again once
+    // a pair has moved one of its corners. Two corners of the upper layer lie inside the
+    // thickness over the lower one, at two places: the first push tilts the lower layer,
+    // and the second must be measured from the tilted plane. The last push of the run
+    // leaves its vertex a thickness over the layer as it now lies, to 0.2 nm (the corners'
+    // turn as they give way); measured from the plane before the first push, it was
+    // 17.8 µm short.
+    void aLayerTiltedByOnePushIsMeasuredAsItLiesForTheNext() {
+        Sheet s;
+        const double m = 1e-5;
+        s.addVertex(Vec3(0.0, 0.0, 0.0), Vec3::Zero(), m, Vec2(0.0, 0.0));
+        s.addVertex(Vec3(0.01, 0.0, 0.0), Vec3::Zero(), m, Vec2(0.01, 0.0));
+        s.addVertex(Vec3(0.0, 0.0, 0.01), Vec3::Zero(), m, Vec2(0.0, 0.01));
+        s.addVertex(Vec3(0.002, 2e-5, 0.002), Vec3::Zero(), m, Vec2(0.1, 0.1));
+        s.addVertex(Vec3(0.006, 5e-5, 0.002), Vec3::Zero(), 3.0 * m, Vec2(0.14, 0.1));
+        s.addVertex(Vec3(0.004, 5e-5, -0.02), Vec3::Zero(), m, Vec2(0.12, 0.08));
+        s.tris.push_back({{0, 2, 1}, {kNone, kNone, kNone}}); // normal +y
+        s.tris.push_back({{3, 5, 4}, {kNone, kNone, kNone}});
+        const std::vector<double> w = inverseMasses(s);
+        SelfContact contact;
+        contact.find(s, w, kThickness, std::vector<double>(6, 1e-4), 0.0);
+        std::vector<Index> run; // the vertices paired with the lower layer, in order
+        for (const SelfContact::Pair& p : contact.pairs())
+            if (p.triangle == 0) run.push_back(p.vertex);
+        QCOMPARE(run.size(), std::size_t{2});
+        std::vector<Vec3> x = s.verts.x;
+        const std::vector<Vec3> before = x;
+        contact.resolve(x, before, w, 0.0, 0.0, false, 1.0);
+        QVERIFY(x[0].y() != 0.0 || x[1].y() != 0.0 || x[2].y() != 0.0); // it tilted
+        const double last = over(s, x, 0, x[run.back()]);
+        qInfo("the last vertex of the run: %.9f mm over the layer as it lies", 1e3 * last);
+        QVERIFY2(std::abs(last - kThickness) < 1e-8, qPrintable(QString::number(last, 'g', 17)));
+    }
+
     void paperInsideTheThicknessPartsSlowlyAndPaperRoundTheEdgeIsLeft() {
         const Sheet s = twoLayers();
         const std::vector<double> w = inverseMasses(s);
