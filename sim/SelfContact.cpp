@@ -37,7 +37,7 @@ std::size_t slotOf(std::uint64_t key, std::size_t slots) {
 } // namespace
 
 void SelfContact::find(const Sheet& sheet, const std::vector<double>& inverseMass, double thickness,
-                       const std::vector<double>& allowance, double apart) {
+                       const std::vector<double>& allowance, double apart, int bucketCells) {
     pairs_.clear();
     cells_.clear();
     thickness_ = thickness;
@@ -65,23 +65,48 @@ void SelfContact::find(const Sheet& sheet, const std::vector<double>& inverseMas
     const auto cellOf = [&](double c) {
         return static_cast<std::int64_t>(std::floor(c / cell + 0.5));
     };
-    const auto eachCell = [&](const Vec3& lo, const Vec3& hi, const auto& visit) {
-        if (!lo.allFinite() || !hi.allFinite()) return;
-        const std::int64_t i0 = cellOf(lo.x()), i1 = cellOf(hi.x());
-        const std::int64_t j0 = cellOf(lo.y()), j1 = cellOf(hi.y());
-        const std::int64_t k0 = cellOf(lo.z()), k1 = cellOf(hi.z());
-        if ((i1 - i0 + 1) * (j1 - j0 + 1) * (k1 - k0 + 1) > kMaxCellsPerBox) return;
+    // A box's cells, or none if it is not finite or has blown up.
+    const auto cellsOf = [&](const Vec3& lo, const Vec3& hi, CellRange& range) {
+        if (!lo.allFinite() || !hi.allFinite()) return false;
+        for (int axis = 0; axis < 3; ++axis) {
+            range.lo[axis] = cellOf(lo[axis]);
+            range.hi[axis] = cellOf(hi[axis]);
+        }
+        return (range.hi[0] - range.lo[0] + 1) * (range.hi[1] - range.lo[1] + 1) *
+                   (range.hi[2] - range.lo[2] + 1) <=
+               kMaxCellsPerBox;
+    };
+    // Which pairs are tried is decided in these cells, and so is their order: a
+    // triangle's pairs come in the order of the first cell each vertex shares with it
+    // (by x, then y, then z, as the triangle's cells were once walked), then by vertex.
+    // The hash itself has buckets of `group` cells a side. When the vertices' boxes
+    // span many cells (paper that swings fast), a triangle and a vertex shared up to
+    // hundreds of cells, and walking the same vertex again in each took 40 % of a
+    // swinging sheet's step; buckets about as wide as the widest allowance hold each box
+    // in two or three a side. The buckets decide only where to look, so the pairs are the
+    // same, in the same order, for any size of bucket (test_self_contact).
+    const std::int64_t group =
+        bucketCells > 0 ? bucketCells
+                        : std::max<std::int64_t>(1, static_cast<std::int64_t>(widest / cell));
+    const auto bucketOf = [group](std::int64_t c) {
+        return c >= 0 ? c / group : -((-c + group - 1) / group);
+    };
+    const auto eachBucket = [&](const CellRange& range, const auto& visit) {
+        const std::int64_t i0 = bucketOf(range.lo[0]), i1 = bucketOf(range.hi[0]);
+        const std::int64_t j0 = bucketOf(range.lo[1]), j1 = bucketOf(range.hi[1]);
+        const std::int64_t k0 = bucketOf(range.lo[2]), k1 = bucketOf(range.hi[2]);
         for (std::int64_t i = i0; i <= i1; ++i)
             for (std::int64_t j = j0; j <= j1; ++j)
                 for (std::int64_t k = k0; k <= k1; ++k) visit(cellKey(i, j, k));
     };
+    vertexCells_.resize(static_cast<std::size_t>(nv));
     for (Index v = 0; v < nv; ++v)
-        if (inverseMass[v] != 0.0)
-            eachCell(X[v].array() - allowance[v], X[v].array() + allowance[v],
-                     [&](std::uint64_t key) { cells_.emplace_back(key, v); });
+        if (inverseMass[v] != 0.0 &&
+            cellsOf(X[v].array() - allowance[v], X[v].array() + allowance[v], vertexCells_[v]))
+            eachBucket(vertexCells_[v], [&](std::uint64_t key) { cells_.emplace_back(key, v); });
     std::sort(cells_.begin(), cells_.end());
-    // Each occupied cell's run of vertices, by open addressing (a binary search per cell
-    // a triangle covers took most of the search).
+    // Each occupied bucket's run of vertices, by open addressing (a binary search per
+    // bucket a triangle covers took most of the search).
     std::size_t slots = 16;
     while (slots < 2 * cells_.size()) slots *= 2;
     slots_.assign(slots, Slot{});
@@ -138,7 +163,10 @@ void SelfContact::find(const Sheet& sheet, const std::vector<double>& inverseMas
         const double moves = std::max({allowance[t.v[0]], allowance[t.v[1]], allowance[t.v[2]]});
         const Vec3 lo = a.cwiseMin(b).cwiseMin(c).array() - (thickness + moves);
         const Vec3 hi = a.cwiseMax(b).cwiseMax(c).array() + (thickness + moves);
-        eachCell(lo, hi, [&](std::uint64_t key) {
+        CellRange range;
+        if (!cellsOf(lo, hi, range)) continue;
+        found_.clear();
+        eachBucket(range, [&](std::uint64_t key) {
             const Slot* slot = run(key);
             if (!slot) return;
             for (Index r = slot->begin; r < slot->end; ++r) {
@@ -146,6 +174,15 @@ void SelfContact::find(const Sheet& sheet, const std::vector<double>& inverseMas
                 if (seenBy_[v] == ti) continue;
                 seenBy_[v] = ti;
                 if (v == t.v[0] || v == t.v[1] || v == t.v[2]) continue;
+                // The first cell the vertex's box shares with the triangle's, if any.
+                const CellRange& box = vertexCells_[v];
+                std::array<std::int64_t, 3> first;
+                bool shares = true;
+                for (int axis = 0; axis < 3; ++axis) {
+                    first[axis] = std::max(range.lo[axis], box.lo[axis]);
+                    shares = shares && first[axis] <= std::min(range.hi[axis], box.hi[axis]);
+                }
+                if (!shares) continue;
                 // Paper this far apart now cannot touch before either has moved more
                 // than it may.
                 const double reach = thickness + moves + allowance[v];
@@ -171,9 +208,13 @@ void SelfContact::find(const Sheet& sheet, const std::vector<double>& inverseMas
                               segmentDistance(M[v], M[t.v[1]], M[t.v[2]]),
                               segmentDistance(M[v], M[t.v[2]], M[t.v[0]])}) < apart)
                     continue;
-                pairs_.push_back({v, ti, t.v, dn >= 0.0 ? 1.0 : -1.0, moves + allowance[v]});
+                found_.push_back({{first[0], first[1], first[2], v},
+                                  {v, ti, t.v, dn >= 0.0 ? 1.0 : -1.0, moves + allowance[v]}});
             }
         });
+        std::sort(found_.begin(), found_.end(),
+                  [](const Found& p, const Found& q) { return p.order < q.order; });
+        for (const Found& f : found_) pairs_.push_back(f.pair);
     }
 }
 

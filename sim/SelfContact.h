@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <tuple>
 #include <vector>
 
 namespace pf {
@@ -20,10 +21,13 @@ class SelfContact {
     // than its `allowance` from where it is now: a free vertex within the thickness plus
     // its own and the triangle's corners' allowances of a triangle. A triangle with a
     // corner in the ring of triangles round the vertex is its own paper bending, not a
-    // contact, nor is paper within `apart` of it in the material. Pairs are in triangle order, then
-    // the hash's (a sorted vector's): the same sheet gives the same pairs in the same order.
+    // contact, nor is paper within `apart` of it in the material. Pairs are in triangle
+    // order, then by the first cell of the search's grid the vertex and the triangle
+    // share, then by vertex: the same sheet gives the same pairs in the same order.
+    // `bucketCells` sets the hash's buckets (cells a side; 0: from the allowances), which
+    // change only the time it takes.
     void find(const Sheet& sheet, const std::vector<double>& inverseMass, double thickness,
-              const std::vector<double>& allowance, double apart);
+              const std::vector<double>& allowance, double apart, int bucketCells = 0);
     // Pushes every pair that is closer than the thickness apart back to it, the vertex
     // and the triangle's corners by their inverse masses, but a pair already that close
     // at `previous` (or through) at most `maxSeparation` farther apart than it was. With
@@ -50,7 +54,18 @@ class SelfContact {
     std::vector<Pair> pairs_;
     double thickness_ = 0.0;
     std::vector<Index> seenBy_; // the triangle that tried the vertex last
-    // The free vertices' cells of the hash: (cell key, vertex), sorted by key.
+    // A box's cells of the search's grid, lowest and highest along x, y and z.
+    struct CellRange {
+        std::array<std::int64_t, 3> lo, hi;
+    };
+    std::vector<CellRange> vertexCells_;
+    // A triangle's pairs as they are found, with the first cell each shares with it.
+    struct Found {
+        std::tuple<std::int64_t, std::int64_t, std::int64_t, Index> order;
+        Pair pair;
+    };
+    std::vector<Found> found_;
+    // The free vertices' buckets of the hash: (bucket key, vertex), sorted by key.
     std::vector<std::pair<std::uint64_t, Index>> cells_;
     struct Slot {
         std::uint64_t key = 0;

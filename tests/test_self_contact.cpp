@@ -206,6 +206,36 @@ class TestSelfContact : public QObject {
         }
     }
 
+    // The hash's buckets only say where to look: the sheet bent over itself, its upper
+    // layer thrown down (allowances of 2 cm there, 1 mm below), gives the same pairs in
+    // the same order with buckets of one cell (the search as it was first written), of
+    // the allowances' size and of several cells.
+    void thePairsDoNotDependOnTheHashsBuckets() {
+        const UFold u = bentOverItself(10.0, true);
+        const Sheet& s = u.world.sheet;
+        std::vector<double> allowance(static_cast<std::size_t>(s.verts.size()), 0.001);
+        for (Index v : u.upper) allowance[static_cast<std::size_t>(v)] = 0.02;
+        const std::vector<double> w = inverseMasses(s);
+        SelfContact one;
+        one.find(s, w, kThickness, allowance, 0.0045, 1);
+        QVERIFY(one.pairs().size() > 100);
+        for (const int bucket : {0, 2, 3, 7}) {
+            SelfContact other;
+            other.find(s, w, kThickness, allowance, 0.0045, bucket);
+            QCOMPARE(other.pairs().size(), one.pairs().size());
+            int differing = 0;
+            for (std::size_t k = 0; k < one.pairs().size(); ++k) {
+                const SelfContact::Pair &p = one.pairs()[k], &q = other.pairs()[k];
+                differing += p.vertex != q.vertex || p.triangle != q.triangle ||
+                                     p.corners != q.corners || p.side != q.side ||
+                                     p.depth != q.depth
+                                 ? 1
+                                 : 0;
+            }
+            QCOMPARE(differing, 0);
+        }
+    }
+
     void aFlatSheetIsOneLayer() {
         // Every vertex of a flat sheet lies within reach of the triangles round it, in
         // their plane: none of them is another layer.
