@@ -8,6 +8,7 @@
 #include "XpbdIntegrator.h"
 
 #include <QTest>
+#include <array>
 #include <numbers>
 
 using namespace pf;
@@ -16,20 +17,26 @@ namespace {
 
 constexpr double kThickness = 1e-4;
 
-// Two triangles of paper far apart in the material, lying one over the other: the lower
-// one flat at y = 0, the upper one's first corner 0.5 mm over the lower's middle.
-Sheet twoLayers() {
+// Two triangles of paper far apart in the material: the lower one flat at y = 0 with
+// corners at the origin, 1 cm along x and 1 cm along z (normal +y), and the upper one's
+// corners at `upper`, with their masses and places in the material.
+Sheet twoTriangles(const std::array<Vec3, 3>& upper, const std::array<double, 3>& masses,
+                   const std::array<Vec2, 3>& material) {
     Sheet s;
     const double m = 1e-5;
     s.addVertex(Vec3(0.0, 0.0, 0.0), Vec3::Zero(), m, Vec2(0.0, 0.0));
     s.addVertex(Vec3(0.01, 0.0, 0.0), Vec3::Zero(), m, Vec2(0.01, 0.0));
     s.addVertex(Vec3(0.0, 0.0, 0.01), Vec3::Zero(), m, Vec2(0.0, 0.01));
-    s.addVertex(Vec3(0.003, 5e-4, 0.003), Vec3::Zero(), 2.0 * m, Vec2(0.1, 0.1));
-    s.addVertex(Vec3(0.03, 5e-4, 0.0), Vec3::Zero(), m, Vec2(0.13, 0.1));
-    s.addVertex(Vec3(0.0, 5e-4, 0.03), Vec3::Zero(), m, Vec2(0.1, 0.13));
-    s.tris.push_back({{0, 2, 1}, {kNone, kNone, kNone}}); // normal +y
+    for (int k = 0; k < 3; ++k) s.addVertex(upper[k], Vec3::Zero(), masses[k], material[k]);
+    s.tris.push_back({{0, 2, 1}, {kNone, kNone, kNone}});
     s.tris.push_back({{3, 5, 4}, {kNone, kNone, kNone}});
     return s;
+}
+
+// The lower triangle with the upper one's first corner 0.5 mm over its middle.
+Sheet twoLayers() {
+    return twoTriangles({Vec3(0.003, 5e-4, 0.003), Vec3(0.03, 5e-4, 0.0), Vec3(0.0, 5e-4, 0.03)},
+                        {2e-5, 1e-5, 1e-5}, {Vec2(0.1, 0.1), Vec2(0.13, 0.1), Vec2(0.1, 0.13)});
 }
 
 std::vector<double> inverseMasses(const Sheet& s) {
@@ -117,16 +124,9 @@ class TestSelfContact : public QObject {
     // turn as they give way); measured from the plane before the first push, it was
     // 17.8 µm short.
     void aLayerTiltedByOnePushIsMeasuredAsItLiesForTheNext() {
-        Sheet s;
-        const double m = 1e-5;
-        s.addVertex(Vec3(0.0, 0.0, 0.0), Vec3::Zero(), m, Vec2(0.0, 0.0));
-        s.addVertex(Vec3(0.01, 0.0, 0.0), Vec3::Zero(), m, Vec2(0.01, 0.0));
-        s.addVertex(Vec3(0.0, 0.0, 0.01), Vec3::Zero(), m, Vec2(0.0, 0.01));
-        s.addVertex(Vec3(0.002, 2e-5, 0.002), Vec3::Zero(), m, Vec2(0.1, 0.1));
-        s.addVertex(Vec3(0.006, 5e-5, 0.002), Vec3::Zero(), 3.0 * m, Vec2(0.14, 0.1));
-        s.addVertex(Vec3(0.004, 5e-5, -0.02), Vec3::Zero(), m, Vec2(0.12, 0.08));
-        s.tris.push_back({{0, 2, 1}, {kNone, kNone, kNone}}); // normal +y
-        s.tris.push_back({{3, 5, 4}, {kNone, kNone, kNone}});
+        const Sheet s = twoTriangles(
+            {Vec3(0.002, 2e-5, 0.002), Vec3(0.006, 5e-5, 0.002), Vec3(0.004, 5e-5, -0.02)},
+            {1e-5, 3e-5, 1e-5}, {Vec2(0.1, 0.1), Vec2(0.14, 0.1), Vec2(0.12, 0.08)});
         const std::vector<double> w = inverseMasses(s);
         SelfContact contact;
         contact.find(s, w, kThickness, std::vector<double>(6, 1e-4), 0.0);

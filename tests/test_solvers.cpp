@@ -14,13 +14,18 @@ using namespace pf;
 
 namespace {
 
-// A sheet stretched by 4 % in-plane with random velocities: every spring is longer
-// than its rest length, so every block is positive definite without any clamping.
-Sheet stretchedSheet() {
+// The flat 9 × 12 sheet the tests below start from.
+Sheet smallSheet() {
     SheetSpec spec;
     spec.columns = 9;
     spec.rows = 12;
-    Sheet s = buildRectangleSheet(spec);
+    return buildRectangleSheet(spec);
+}
+
+// A sheet stretched by 4 % in-plane with random velocities: every spring is longer
+// than its rest length, so every block is positive definite without any clamping.
+Sheet stretchedSheet() {
+    Sheet s = smallSheet();
     Rng rng(7);
     for (Index i = 0; i < s.verts.size(); ++i) {
         s.verts.x[i] *= 1.04;
@@ -162,10 +167,7 @@ class TestSolvers : public QObject {
     // constraints between the same two vertices. And its LDLT, ordered without Eigen's
     // second Aᵀ + A, orders and solves it exactly as Eigen's default LDLT does.
     void projectionSystemIsTheTripletSumBitForBit() {
-        SheetSpec spec;
-        spec.columns = 9;
-        spec.rows = 12;
-        const Sheet sheet = buildRectangleSheet(spec);
+        const Sheet sheet = smallSheet();
         Rng rng(11);
         const Index nv = sheet.verts.size();
         std::vector<Vec3> x(nv);
@@ -241,10 +243,7 @@ class TestSolvers : public QObject {
     // one at a time in the same order gives, forward and then backward, with constraints
     // held at their caps, a degenerate edge, and a group whose constraints share vertices.
     void stretchPassIsTheSequentialPassBitForBit() {
-        SheetSpec spec;
-        spec.columns = 9;
-        spec.rows = 12;
-        const Sheet sheet = buildRectangleSheet(spec);
+        const Sheet sheet = smallSheet();
         Rng rng(11);
         std::vector<Vec3> start = sheet.verts.x;
         for (Vec3& x : start)
