@@ -86,8 +86,9 @@ void SelfContact::find(const Sheet& sheet, const std::vector<double>& inverseMas
     // in two or three a side. The buckets decide only where to look, so the pairs are the
     // same, in the same order, for any size of bucket (test_self_contact).
     const std::int64_t group =
-        bucketCells > 0 ? bucketCells
-                        : std::max<std::int64_t>(1, static_cast<std::int64_t>(widest / cell));
+        bucketCells < 0   ? 1
+        : bucketCells > 0 ? bucketCells
+                          : std::max<std::int64_t>(1, static_cast<std::int64_t>(widest / cell));
     const auto bucketOf = [group](std::int64_t c) {
         return c >= 0 ? c / group : -((-c + group - 1) / group);
     };
@@ -212,8 +213,11 @@ void SelfContact::find(const Sheet& sheet, const std::vector<double>& inverseMas
                                   {v, ti, t.v, dn >= 0.0 ? 1.0 : -1.0, moves + allowance[v]}});
             }
         });
-        std::sort(found_.begin(), found_.end(),
-                  [](const Found& p, const Found& q) { return p.order < q.order; });
+        // (With buckets of one cell the walk finds them in that order already; a negative
+        // bucketCells keeps the walk's own order, for the test that compares the two.)
+        if (bucketCells >= 0)
+            std::sort(found_.begin(), found_.end(),
+                      [](const Found& p, const Found& q) { return p.order < q.order; });
         for (const Found& f : found_) pairs_.push_back(f.pair);
     }
 }

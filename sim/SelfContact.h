@@ -25,7 +25,8 @@ class SelfContact {
     // order, then by the first cell of the search's grid the vertex and the triangle
     // share, then by vertex: the same sheet gives the same pairs in the same order.
     // `bucketCells` sets the hash's buckets (cells a side; 0: from the allowances), which
-    // change only the time it takes.
+    // change only the time it takes; -1 walks cell by cell and keeps the walk's order, as
+    // the search did before it had buckets (for tests).
     void find(const Sheet& sheet, const std::vector<double>& inverseMass, double thickness,
               const std::vector<double>& allowance, double apart, int bucketCells = 0);
     // Pushes every pair that is closer than the thickness apart back to it, the vertex

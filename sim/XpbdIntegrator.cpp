@@ -894,26 +894,14 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     }
     // The layers that can meet in this step: the pairs that can touch before any vertex
     // has moved farther than twice its travel in a step (at the speed it starts with and
-    // what gravity adds) plus kContactMargin. Travel is measured against the sheet's mean
-    // velocity: only how two layers move relative to each other brings them together, and
-    // for any two vertices |v_a − v̄| + |v_b − v̄| ≥ |v_a − v_b|, so the sum of their
-    // allowances still covers their approach. Measured from the desk instead, a sheet
-    // swinging at 2 m/s gave every vertex a 4 cm reach, and its own layer a few centimetres
-    // away made 31,000-59,000 pairs a step that never touched (docs/speed.md).
+    // what gravity adds) plus kContactMargin.
     const bool selfContact = params.selfContact && mat.thickness > 0.0;
     if (selfContact) {
         allowance_.resize(static_cast<std::size_t>(nv));
-        Vec3 momentum = Vec3::Zero();
-        double mass = 0.0;
-        for (Index i = 0; i < nv; ++i) {
-            momentum += V.m[i] * V.v[i];
-            mass += V.m[i];
-        }
-        const Vec3 drift = mass > 0.0 ? Vec3(momentum / mass) : Vec3::Zero();
         for (Index i = 0; i < nv; ++i)
-            allowance_[i] = std::min(
-                2.0 * ((V.v[i] - drift).norm() + g.norm() * params.dt) * params.dt + kContactMargin,
-                kMaxContactAllowance);
+            allowance_[i] =
+                std::min(2.0 * (V.v[i].norm() + g.norm() * params.dt) * params.dt + kContactMargin,
+                         kMaxContactAllowance);
         selfContact_.find(sheet, w_, mat.thickness, allowance_, kContactApart * mat.creaseSpacing);
     }
     const auto touchLayers = [&](bool withFriction) {

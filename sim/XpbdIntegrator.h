@@ -107,8 +107,7 @@ inline constexpr double kBuckledStrain = 1e-5;
 inline constexpr double kContactMargin = 5e-4;
 // ... but no farther than this (m): paper flung at tens of metres a second by a step that
 // went wrong asked for 450,000 pairs. Paper faster than this per step (4.8 m/s at
-// h = 1/240 s, relative to the sheet's mean velocity) may pass through a layer it was not
-// near when the step began.
+// h = 1/240 s) may pass through a layer it was not near when the step began.
 inline constexpr double kMaxContactAllowance = 0.02;
 // Layers that a sub-step begins inside each other's thickness part at most this fast
 // (m/s): 0.4 mm a step.
@@ -153,8 +152,6 @@ class XpbdIntegrator final : public Integrator {
         std::int64_t newtonIterations = 0;
     };
     ProjectionWork projectionWork() const { return projectionWork_; }
-    // The vertex-triangle pairs self-contact looked at in the last step.
-    std::size_t contactPairs() const { return selfContact_.pairs().size(); }
 
     // One term ½ |Σ k x|² / compliance of the bending energy: a second difference of
     // the positions (Σ k = 0 and Σ k X = 0, so it vanishes on the flat rest sheet).
