@@ -210,7 +210,7 @@ class TestSelfContact : public QObject {
     // layer thrown down (allowances of 2 cm there, 1 mm below), gives the same pairs in
     // the same order as walking the cells one by one and taking each vertex where the
     // walk first meets it (the search as it was first written, bucketCells -1), with
-    // buckets of the allowances' size and of several cells.
+    // buckets of one cell, of the allowances' size and of several cells.
     void thePairsDoNotDependOnTheHashsBuckets() {
         const UFold u = bentOverItself(10.0, true);
         const Sheet& s = u.world.sheet;
