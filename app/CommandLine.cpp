@@ -78,6 +78,12 @@ void requireWritable(const QString& option, const QString& path, const QStringLi
     if (!problem.isEmpty()) throw UsageError{QStringLiteral("--%1: %2").arg(option, problem)};
 }
 
+void requirePngName(const QString& option, const QString& path) {
+    if (!path.endsWith(QStringLiteral(".png"), Qt::CaseInsensitive))
+        throw UsageError{QStringLiteral("--%1: '%2' does not end in .png (the images are PNG)")
+                             .arg(option, path)};
+}
+
 void rejectExtraArguments(const QCommandLineParser& parser, int allowed) {
     const QStringList extra = parser.positionalArguments().mid(allowed);
     if (!extra.isEmpty())

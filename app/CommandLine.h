@@ -35,6 +35,10 @@ int threadsOption(const QCommandLineParser& parser);
 // before long work starts.
 void requireWritable(const QString& option, const QString& path, const QStringList& inputs = {});
 
+// Throws UsageError, naming the option, unless `path` ends in .png: what the commands
+// that render write is PNG, and a file named otherwise would not open as what it says.
+void requirePngName(const QString& option, const QString& path);
+
 // Throws UsageError for positional arguments beyond the subcommand itself.
 void rejectExtraArguments(const QCommandLineParser& parser, int allowed);
 

@@ -52,6 +52,7 @@ int runReplay(const QStringList& arguments) {
         QString error;
         frames = OutputPattern::parse(parser.value(QStringLiteral("render")), &error);
         if (!frames) throw UsageError{QStringLiteral("--render: ") + error};
+        requirePngName(QStringLiteral("render"), frames->path(0));
         if (!frames->hasField())
             throw UsageError{QStringLiteral("--render needs a pattern such as frame_%04d.png")};
     }

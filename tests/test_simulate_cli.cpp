@@ -398,6 +398,12 @@ class TestSimulateCli : public QObject {
             << QStringList{"render", "--frames", "3", "--output", "a.png"} << "pattern";
         QTest::newRow("missing folder")
             << QStringList{"render", "--output", "/nonexistent/dir/a.png"} << "folder";
+        QTest::newRow("not a png name")
+            << QStringList{"render", "--output", "/tmp/pf-not-png-test.txt"}
+            << "'/tmp/pf-not-png-test.txt' does not end in .png";
+        QTest::newRow("sequence not a png name")
+            << QStringList{"render", "--frames", "2", "--output", "/tmp/pf-frame-%d.jpg"}
+            << "does not end in .png";
         QTest::newRow("unreadable reference") << QStringList{"render",
                                                              "--size",
                                                              "64x64",
@@ -410,10 +416,12 @@ class TestSimulateCli : public QObject {
     void renderRejectsBadValues() {
         QFETCH(QStringList, args);
         QFETCH(QString, mentions);
+        QFile::remove(QStringLiteral("/tmp/pf-not-png-test.txt"));
         const Result r = runPaperfold(args, true);
         QVERIFY(r.exitCode > 0);
         const QString err = QString::fromUtf8(r.err).trimmed();
         QVERIFY2(err.contains(mentions), qPrintable(err));
+        QVERIFY(!QFileInfo::exists(QStringLiteral("/tmp/pf-not-png-test.txt")));
     }
 
     void stabilityMapsWhereMethodsFail() {
@@ -619,6 +627,11 @@ class TestSimulateCli : public QObject {
         QVERIFY(first != last); // the stroke and the settling changed the picture
         QCOMPARE(runPaperfold({"replay", rec, "--render", dir.filePath("no_field.png")}).exitCode,
                  1);
+        // PNG data under another name would not open as what the name says.
+        const Result text = runPaperfold({"replay", rec, "--render", dir.filePath("t_%03d.txt")});
+        QCOMPARE(text.exitCode, 1);
+        QVERIFY2(text.err.contains("does not end in .png"), text.err.constData());
+        QVERIFY(QDir(dir.path()).entryList({QStringLiteral("t_*")}).isEmpty());
 
         // A broken recording: one line, exit 1, nothing written.
         QFile f(rec);
