@@ -1065,19 +1065,25 @@ class TestEditor : public QObject {
     }
 
     // The Export Mesh dialog wraps its sentence (on one line it was about 750 pixels
-    // wide) and gives back the level chosen, or -1 when cancelled.
+    // wide), says the levels it takes (its box refused 9 without a word), and gives back
+    // the level chosen, or -1 when cancelled.
     void theMeshLevelDialogIsNotWiderThanItsSentenceNeeds() {
         int width = 0;
+        QString label;
         QTimer::singleShot(0, window.get(), [&] {
             for (QWidget* w : QApplication::topLevelWidgets())
                 if (auto* d = qobject_cast<QInputDialog*>(w); d && d->isVisible()) {
                     width = d->width();
+                    label = d->labelText();
+                    QCOMPARE(d->intMaximum(), kMaxSubdivisionLevel);
                     d->setIntValue(1);
                     d->accept();
                 }
         });
         QCOMPARE(EditorDialogs::chooseMeshSubdivision(window.get(), 3), 1);
         QVERIFY2(width > 0 && width < 560, qPrintable(QString::number(width)));
+        QVERIFY2(label.contains(QStringLiteral("0 to %1").arg(kMaxSubdivisionLevel)),
+                 qPrintable(label));
         QTimer::singleShot(0, window.get(), [&] {
             for (QWidget* w : QApplication::topLevelWidgets())
                 if (auto* d = qobject_cast<QInputDialog*>(w); d && d->isVisible()) d->reject();
@@ -1189,6 +1195,39 @@ class TestEditor : public QObject {
         QVERIFY(closed);
         QTRY_VERIFY_WITH_TIMEOUT(view->snapshot() && view->snapshot()->sphere.hovering,
                                  kSignalWaitMs);
+    }
+
+    // Open frames the sheet it opens. The sphere hovering under a cursor that has not
+    // moved goes with the view: a user saw it hang where the old framing had put it, far
+    // from the cursor, until the mouse moved (after Reset too, which frames anew).
+    void theToolStaysUnderTheCursorWhenASheetIsOpened() {
+        auto* view = window->viewport();
+        const QPoint at(view->width() * 2 / 5, view->height() * 3 / 5);
+        moveMouse(view, at, Qt::NoButton);
+        QTRY_VERIFY(view->snapshot() && view->snapshot()->sphere.hovering);
+        // A small sheet hanging in the air: framed, it fills the view quite differently.
+        QTemporaryDir dir;
+        nextFile = dir.filePath(QStringLiteral("hanging.paper"));
+        SceneOptions small;
+        small.resolution = 7;
+        World hanging = *makeScene("drape", small);
+        QString error;
+        QVERIFY2(saveWorld(hanging, nextFile, &error), qPrintable(error));
+        window->action("open")->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        const auto underTheCursor = [&] {
+            const auto snap = view->snapshot();
+            if (!snap || snap->x.size() != std::size_t(hanging.sheet.verts.size()) ||
+                !snap->sphere.hovering)
+                return false;
+            const OrbitCamera::Ray ray = view->camera().rayThroughPixel(
+                at.x() + 0.5, at.y() + 0.5, view->width(), view->height());
+            const Vec3 c = snap->sphere.center - ray.origin;
+            const double off = (c - c.dot(ray.direction) * ray.direction).norm();
+            // Resting on what the ray meets, the centre lies one radius from that point.
+            return off <= snap->sphere.radius * 1.001;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(underTheCursor(), kSignalWaitMs);
     }
 
     // Orbited down past the horizon the eye went under the desk, which hid the paper while
@@ -1308,10 +1347,26 @@ class TestEditor : public QObject {
         qInfo("%s", qPrintable(step->text()));
         QVERIFY(!step->toolTip().isEmpty());
         QVERIFY(window->simulation()->status().pace < StatusReadout::kBehindRealTime);
-        // Paused, it runs behind nothing.
+        // Paused, it runs behind nothing, and says it is paused. The break rate, of the
+        // paper's last second, is not shown as if it were live (a user read "65/s" for
+        // nine seconds of a pause, and the toolbar's icon was the only sign of it).
         window->action("play")->setChecked(false);
         window->simulation()->sync();
         QTRY_VERIFY(!step->text().contains(QStringLiteral("real time")));
+        QTRY_VERIFY2(step->text().contains(QStringLiteral("paused")), qPrintable(step->text()));
+        auto* counts = window->statusBar()->findChild<QLabel*>(QStringLiteral("sheetCounts"));
+        auto* rate = window->solverPanel()->findChild<QLabel*>(QStringLiteral("breakRate"));
+        QVERIFY(counts && rate);
+        QVERIFY2(counts->text().contains(QStringLiteral("break")) &&
+                     !counts->text().contains(QStringLiteral("/s")),
+                 qPrintable(counts->text()));
+        QCOMPARE(rate->text(), QStringLiteral("paused"));
+        window->action("play")->setChecked(true);
+        QTRY_VERIFY(counts->text().contains(QStringLiteral("/s)")));
+        QTRY_VERIFY(rate->text().contains(QStringLiteral("per second")));
+        QVERIFY(!step->text().contains(QStringLiteral("paused")));
+        window->action("play")->setChecked(false);
+        window->simulation()->sync();
 
         // Nor at rest, whatever the last second's pace: a user read "at rest · 0.74×
         // real time" in the second after a slow stroke.
@@ -1327,6 +1382,12 @@ class TestEditor : public QObject {
         readout.show(st);
         QVERIFY2(!label->text().contains(QStringLiteral("real time")), qPrintable(label->text()));
         QVERIFY(label->text().contains(QStringLiteral("at rest")));
+        // Paused at rest reads paused: the sheet lies still because nothing runs.
+        st.playing = false;
+        readout.show(st);
+        QVERIFY2(label->text().contains(QStringLiteral("paused")) &&
+                     !label->text().contains(QStringLiteral("at rest")),
+                 qPrintable(label->text()));
     }
 
     // A message that says what to do is read whole: at 800 pixels the sheet's counts

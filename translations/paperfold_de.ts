@@ -375,8 +375,8 @@
         <translation>Papierfarbe</translation>
     </message>
     <message>
-        <source>Subdivision level: 0 writes the simulation mesh; each level splits every triangle in four along the paper&apos;s curved surface.</source>
-        <translation>Unterteilungsstufe: 0 schreibt das Simulationsnetz; jede Stufe teilt jedes Dreieck entlang der gekrümmten Papierfläche in vier.</translation>
+        <source>Subdivision level, 0 to %1: 0 writes the simulation mesh; each level splits every triangle in four along the paper&apos;s curved surface.</source>
+        <translation>Unterteilungsstufe, 0 bis %1: 0 schreibt das Simulationsnetz; jede Stufe teilt jedes Dreieck entlang der gekrümmten Papierfläche in vier.</translation>
     </message>
 </context>
 <context>
@@ -754,6 +754,10 @@
 <context>
     <name>pf::SolverPanel</name>
     <message>
+        <source>paused</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
         <source>tissue</source>
         <translation>Seidenpapier</translation>
     </message>
@@ -858,6 +862,18 @@
 </context>
 <context>
     <name>pf::StatusReadout</name>
+    <message>
+        <source>%1 · paused</source>
+        <translation>%1 · angehalten</translation>
+    </message>
+    <message>
+        <source>%1 vertices · %2 springs · %3 · %4</source>
+        <translation>%1 Knoten · %2 Federn · %3 · %4</translation>
+    </message>
+    <message>
+        <source>In brackets: the breaks in the last second of simulated time, which lasts longer than a second on the clock while the sheet runs behind real time</source>
+        <translation>In Klammern: die Brüche in der letzten Sekunde simulierter Zeit, die auf der Uhr länger als eine Sekunde dauert, solange das Blatt langsamer als in Echtzeit läuft</translation>
+    </message>
     <message>
         <source>%1 · %2× real time</source>
         <translation>%1 · %2× Echtzeit</translation>

@@ -370,8 +370,8 @@
         <translation>紙の色</translation>
     </message>
     <message>
-        <source>Subdivision level: 0 writes the simulation mesh; each level splits every triangle in four along the paper&apos;s curved surface.</source>
-        <translation>細分割レベル: 0 はシミュレーションのメッシュをそのまま書き出します。レベルが1つ上がるごとに、各三角形を紙の曲面に沿って4つに分割します。</translation>
+        <source>Subdivision level, 0 to %1: 0 writes the simulation mesh; each level splits every triangle in four along the paper&apos;s curved surface.</source>
+        <translation>細分割レベル (0〜%1): 0 はシミュレーションのメッシュをそのまま書き出します。レベルが1つ上がるごとに、各三角形を紙の曲面に沿って4つに分割します。</translation>
     </message>
 </context>
 <context>
@@ -749,6 +749,10 @@
 <context>
     <name>pf::SolverPanel</name>
     <message>
+        <source>paused</source>
+        <translation>一時停止中</translation>
+    </message>
+    <message>
         <source>tissue</source>
         <translation>ティッシュ</translation>
     </message>
@@ -851,6 +855,18 @@
 </context>
 <context>
     <name>pf::StatusReadout</name>
+    <message>
+        <source>%1 · paused</source>
+        <translation>%1 · 一時停止中</translation>
+    </message>
+    <message>
+        <source>%1 vertices · %2 springs · %3 · %4</source>
+        <translation>頂点 %1 · ばね %2 · %3 · %4</translation>
+    </message>
+    <message>
+        <source>In brackets: the breaks in the last second of simulated time, which lasts longer than a second on the clock while the sheet runs behind real time</source>
+        <translation>括弧内: シミュレーション時間の直近 1 秒間の破断数。シートが実時間より遅く動いている間、この 1 秒は時計では 1 秒より長くかかります</translation>
+    </message>
     <message>
         <source>%1 · %2× real time</source>
         <translation>%1 · 実時間の%2倍</translation>

@@ -370,8 +370,8 @@
         <translation>종이 색</translation>
     </message>
     <message>
-        <source>Subdivision level: 0 writes the simulation mesh; each level splits every triangle in four along the paper&apos;s curved surface.</source>
-        <translation>세분 단계: 0은 시뮬레이션 메시를 그대로 저장합니다. 단계마다 모든 삼각형을 종이의 곡면을 따라 넷으로 나눕니다.</translation>
+        <source>Subdivision level, 0 to %1: 0 writes the simulation mesh; each level splits every triangle in four along the paper&apos;s curved surface.</source>
+        <translation>세분 단계 (0~%1): 0은 시뮬레이션 메시를 그대로 저장합니다. 단계마다 모든 삼각형을 종이의 곡면을 따라 넷으로 나눕니다.</translation>
     </message>
 </context>
 <context>
@@ -749,6 +749,10 @@
 <context>
     <name>pf::SolverPanel</name>
     <message>
+        <source>paused</source>
+        <translation>일시 정지됨</translation>
+    </message>
+    <message>
         <source>tissue</source>
         <translation>티슈</translation>
     </message>
@@ -851,6 +855,18 @@
 </context>
 <context>
     <name>pf::StatusReadout</name>
+    <message>
+        <source>%1 · paused</source>
+        <translation>%1 · 일시 정지됨</translation>
+    </message>
+    <message>
+        <source>%1 vertices · %2 springs · %3 · %4</source>
+        <translation>정점 %1 · 스프링 %2 · %3 · %4</translation>
+    </message>
+    <message>
+        <source>In brackets: the breaks in the last second of simulated time, which lasts longer than a second on the clock while the sheet runs behind real time</source>
+        <translation>괄호 안: 시뮬레이션 시간 최근 1초 동안의 파단 수. 시트가 실시간보다 느리게 움직이는 동안 이 1초는 시계로는 1초보다 오래 걸립니다</translation>
+    </message>
     <message>
         <source>%1 · %2× real time</source>
         <translation>%1 · 실시간의 %2배</translation>

@@ -57,7 +57,11 @@ void StatusReadout::show(const SimulationStatus& st) {
     updateFps();
     // A user could not tell a sheet lying still from one that only looked still.
     QString step = tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0);
-    if (st.resting()) step = tr("%1 · at rest").arg(step);
+    // Paused, the toolbar's icon was the only sign, and a paused sheet could read "at rest".
+    if (!st.playing)
+        step = tr("%1 · paused").arg(step);
+    else if (st.resting())
+        step = tr("%1 · at rest").arg(step);
     // Behind real time, the paper falls and slides slower than paper does: say so, and
     // what helps.
     // (A sheet at rest keeps up whatever the last second's pace was: a user read
@@ -71,12 +75,26 @@ void StatusReadout::show(const SimulationStatus& st) {
                                   "are faster.")
                              : QString());
     // The counts that can be one are said with their plural forms ("1 break", "2 breaks").
-    counts_->setText(tr("%1 vertices · %2 springs · %3 (%4/s) · %5")
-                         .arg(st.vertices)
-                         .arg(st.springs)
-                         .arg(tr("%n break(s)", nullptr, st.breaks))
-                         .arg(st.breaksLastSecond)
-                         .arg(tr("%n hinge(s)", nullptr, st.hinges)));
+    // The rate counts the paper's last second. Paused, no time passes for the paper, and
+    // the last rate stood there as if it were live (a user read "65/s" for nine seconds).
+    if (st.playing)
+        counts_->setText(tr("%1 vertices · %2 springs · %3 (%4/s) · %5")
+                             .arg(st.vertices)
+                             .arg(st.springs)
+                             .arg(tr("%n break(s)", nullptr, st.breaks))
+                             .arg(st.breaksLastSecond)
+                             .arg(tr("%n hinge(s)", nullptr, st.hinges)));
+    else
+        counts_->setText(tr("%1 vertices · %2 springs · %3 · %4")
+                             .arg(st.vertices)
+                             .arg(st.springs)
+                             .arg(tr("%n break(s)", nullptr, st.breaks))
+                             .arg(tr("%n hinge(s)", nullptr, st.hinges)));
+    // Behind real time the paper's second lasts longer on the clock: a user read "865
+    // breaks (865/s)" at 0.03× real time as 865 in the last second he waited.
+    counts_->setToolTip(tr("In brackets: the breaks in the last second of simulated time, "
+                           "which lasts longer than a second on the clock while the sheet "
+                           "runs behind real time"));
 }
 
 } // namespace pf

@@ -68,6 +68,7 @@ void ViewportInput::fitCamera() {
     c.fitPoints(snap->x,
                 double(std::max(1, viewport_->width())) / std::max(1, viewport_->height()));
     viewport_->setCamera(c);
+    toolFollowsTheView();
 }
 
 void ViewportInput::setView(const char* name) {
@@ -76,6 +77,7 @@ void ViewportInput::setView(const char* name) {
     c.target = now.target;
     c.distance = now.distance;
     viewport_->setCamera(c);
+    toolFollowsTheView();
 }
 
 void ViewportInput::pointTool(const QPoint& pixel, bool pressed) {
@@ -85,6 +87,7 @@ void ViewportInput::pointTool(const QPoint& pixel, bool pressed) {
     const bool began = pressed && !toolPressed_;
     toolPressed_ = pressed;
     toolShown_ = true;
+    toolPixel_ = pixel;
     sim_->setTool(toolTarget_, toolRadius_, true, pressed);
     if (began) emit strokeBegan();
 }
@@ -174,8 +177,14 @@ void ViewportInput::showToolUnderCursor() {
     pointTool(at, false);
 }
 
+void ViewportInput::toolFollowsTheView() {
+    if (tool_ != Tool::Push || !toolShown_ || toolPressed_ || !toolPixel_) return;
+    pointTool(*toolPixel_, false);
+}
+
 void ViewportInput::hideTool() {
     toolPressed_ = false;
+    toolPixel_.reset();
     if (!toolShown_) return;
     toolShown_ = false;
     sim_->setTool(toolTarget_, toolRadius_, false, false);

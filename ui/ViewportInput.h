@@ -33,6 +33,10 @@ class ViewportInput : public QObject {
     // without having moved: after a modal dialog the sphere stayed hidden (the view saw
     // the cursor leave) until the mouse moved.
     void showToolUnderCursor();
+    // The hovering sphere put back under the pixel the cursor last pointed it from, after
+    // the view or the sheet under it changed without the mouse moving: after Open and
+    // Reset it hung where the old framing had put it until the mouse moved.
+    void toolFollowsTheView();
     void setTool(Tool tool);
     // The sheet let go of a held grab (an undo or redo): the hand holds nothing until the
     // next press.
@@ -90,7 +94,8 @@ class ViewportInput : public QObject {
     double pushDepth_ = kDefaultPushDepth;
     Vec3 toolTarget_ = Vec3::Zero();
     bool toolPressed_ = false;
-    bool toolShown_ = true; // a scene may start with the sphere shown
+    bool toolShown_ = true;           // a scene may start with the sphere shown
+    std::optional<QPoint> toolPixel_; // where the cursor last pointed the shown tool
     Tool tool_ = Tool::Push;
     bool grabbing_ = false;
     Vec3 grabPoint_ = Vec3::Zero(); // the plane the grab moves in passes through it
