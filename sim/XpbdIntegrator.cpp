@@ -479,9 +479,18 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
     // above where they were, and they end there if the last does not come back.
     double best = std::numeric_limits<double>::infinity();
     const auto endAtTheBest = [&] {
-        if (worstProjectedStretch(sheet) > best) {
+        double left = worstProjectedStretch(sheet);
+        if (left > best) {
             V.x = bestX_;
             V.v = bestV_;
+            left = best;
+        }
+        // Past the bound, sweeps and one more start (kLeftoverSweeps says why).
+        if (left > kStretchBound && !retrying_) {
+            relaxWhatTheProjectionLeft(sheet, dt);
+            retrying_ = true;
+            projectStretch(sheet, dt, iterations, compliance);
+            retrying_ = false;
         }
     };
     for (int iteration = 0; iteration < kMaxProjectionIterations; ++iteration) {
@@ -593,6 +602,29 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
         }
     }
     endAtTheBest();
+}
+
+// kLeftoverSweeps says why. Mass-weighted, as the projection moves, and the move is a
+// change of velocity too, as the projection's is.
+void XpbdIntegrator::relaxWhatTheProjectionLeft(Sheet& sheet, double dt) {
+    auto& V = sheet.verts;
+    for (int sweep = 0; sweep < kLeftoverSweeps; ++sweep) {
+        double worst = 0.0;
+        for (const StretchConstraint& k : stretch_) {
+            if (!projects(k)) continue;
+            const Vec3 d = V.x[k.a] - V.x[k.b];
+            const double len = d.norm();
+            const double excess = len - k.rest;
+            if (!(excess > 0.0)) continue;
+            worst = std::max(worst, excess / k.rest);
+            const Vec3 move = d * (excess / (len * (w_[k.a] + w_[k.b])));
+            V.x[k.a] -= w_[k.a] * move;
+            V.x[k.b] += w_[k.b] * move;
+            V.v[k.a] -= w_[k.a] * move / dt;
+            V.v[k.b] += w_[k.b] * move / dt;
+        }
+        if (!(worst > kProjectedStretch)) return;
+    }
 }
 
 // The largest stretch among the edges the projection holds.
