@@ -52,7 +52,6 @@ int runReplay(const QStringList& arguments) {
         QString error;
         frames = OutputPattern::parse(parser.value(QStringLiteral("render")), &error);
         if (!frames) throw UsageError{QStringLiteral("--render: ") + error};
-        requirePngName(QStringLiteral("render"), frames->path(0));
         if (!frames->hasField())
             throw UsageError{QStringLiteral("--render needs a pattern such as frame_%04d.png")};
     }
@@ -87,6 +86,7 @@ int runReplay(const QStringList& arguments) {
         for (std::int64_t f = 0; f < frameCount; ++f)
             requireWritable(QStringLiteral("render"), frames->path(int(f)),
                             QStringList{path} + picture.lookInputs);
+        requirePngName(QStringLiteral("render"), frames->path(0));
         QString error;
         renderer = OffscreenRenderer::create(picture.width, picture.height, &error);
         if (!renderer) {

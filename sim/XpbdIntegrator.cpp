@@ -478,19 +478,27 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
     // does not more than double the worst stretch (below), so the iterations may wander
     // above where they were, and they end there if the last does not come back.
     double best = std::numeric_limits<double>::infinity();
-    const auto endAtTheBest = [&] {
+    // Where Newton wandered (it ran out of iterations or of halvings) and left the worst
+    // over the bound, sweeps and one more start (kLeftoverSweeps says why); the state it
+    // ended in is kept if they do no better. Where it gave up on purpose (a vertex of too
+    // many edges, a factorisation that failed) the sub-steps keep the stretch.
+    const auto endAtTheBest = [&](bool wandered) {
         double left = worstProjectedStretch(sheet);
         if (left > best) {
             V.x = bestX_;
             V.v = bestV_;
             left = best;
         }
-        // Past the bound, sweeps and one more start (kLeftoverSweeps says why).
-        if (left > kStretchBound && !retrying_) {
-            relaxWhatTheProjectionLeft(sheet, dt);
-            retrying_ = true;
-            projectStretch(sheet, dt, iterations, compliance);
-            retrying_ = false;
+        if (!wandered || !(left > kStretchBound) || retrying_) return;
+        ended_.x = V.x;
+        ended_.v = V.v;
+        relaxWhatTheProjectionLeft(sheet, dt);
+        retrying_ = true;
+        projectStretch(sheet, dt, iterations, compliance);
+        retrying_ = false;
+        if (worstProjectedStretch(sheet) > left) {
+            V.x = ended_.x;
+            V.v = ended_.v;
         }
     };
     for (int iteration = 0; iteration < kMaxProjectionIterations; ++iteration) {
@@ -516,7 +524,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
         // Past `iterations` the projection goes on only while the stretch is over issue
         // 9's bound (kMaxProjectionIterations says why).
         if (iteration >= iterations && !(worst > kStretchBound)) {
-            endAtTheBest();
+            endAtTheBest(false);
             return;
         }
         const Index na = static_cast<Index>(active_.size());
@@ -538,7 +546,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
         }
         for (Index i = 0; i < nv; ++i)
             if (w_[i] != 0.0 && incidentStart_[i + 1] > kMaxProjectedDegree) {
-                endAtTheBest();
+                endAtTheBest(false);
                 return;
             }
         for (Index i = 0; i < nv; ++i) incidentStart_[i + 1] += incidentStart_[i];
@@ -557,7 +565,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
                                  projectionSystem_);
         projection_.compute(projectionSystem_);
         if (projection_.info() != Eigen::Success) {
-            endAtTheBest();
+            endAtTheBest(false);
             return;
         }
         ++projectionWork_.newtonIterations;
@@ -595,13 +603,13 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
             V.x = projectedFrom_;
             V.v = velocityFrom_;
             if (halving == kProjectionHalvings) {
-                endAtTheBest();
+                endAtTheBest(true);
                 return;
             }
             fraction *= 0.5;
         }
     }
-    endAtTheBest();
+    endAtTheBest(true);
 }
 
 // kLeftoverSweeps says why. Mass-weighted, as the projection moves, and the move is a

@@ -102,10 +102,11 @@ inline constexpr double kStretchBound = 0.01;
 // vertices of a tenth of a milligram, where its steps wander: tissue's crumple-cycles
 // ended all 48 iterations at 8.3 % on a 1.04 mm edge between 0.098 and 0.065 mg), up to
 // this many Gauss-Seidel sweeps pull the stretched edges it holds toward their rest
-// lengths, and Newton starts once more from there. Each sweep only shortens edges, and
-// compression is free, so the sweeps cannot wander as Newton does; but they spread a
-// pull one edge a sweep, and alone took about 600 sweeps to reach 1 % there (64 left
-// 2.75 %). Newton from where 64 left it ended at 0.26 % in 5 iterations.
+// lengths, and Newton starts once more from there. Each edge's |d| ≤ rest is a convex
+// set and a sweep projects onto them one after another, so the sweeps cannot wander as
+// Newton does; but they carry a pull one edge a sweep, and alone took about 600 sweeps
+// to bring the worst edge to 1 % there (64 left 2.75 %). Newton from where 64 left it
+// ended at 0.26 % in 5 iterations.
 inline constexpr int kLeftoverSweeps = 64;
 // An edge shorter than its rest length by more than this has buckled (the sub-steps
 // cap its push at the buckling load) and is left out of the projection; every other
@@ -196,6 +197,9 @@ class XpbdIntegrator final : public Integrator {
     void projectStretch(Sheet& sheet, double dt, int iterations, double compliance);
     void relaxWhatTheProjectionLeft(Sheet& sheet, double dt);
     bool retrying_ = false; // in the projection's second start (kLeftoverSweeps): no third
+    struct {
+        std::vector<Vec3> x, v;
+    } ended_; // where the first start ended, kept in case the second does worse
     double worstProjectedStretch(const Sheet& sheet) const;
     bool mustWake(const Sheet& sheet) const;
 

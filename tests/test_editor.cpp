@@ -1068,19 +1068,20 @@ class TestEditor : public QObject {
     // wide), says the levels it takes (its box refused 9 without a word), and gives back
     // the level chosen, or -1 when cancelled.
     void theMeshLevelDialogIsNotWiderThanItsSentenceNeeds() {
-        int width = 0;
+        int width = 0, highest = -1;
         QString label;
         QTimer::singleShot(0, window.get(), [&] {
             for (QWidget* w : QApplication::topLevelWidgets())
                 if (auto* d = qobject_cast<QInputDialog*>(w); d && d->isVisible()) {
                     width = d->width();
                     label = d->labelText();
-                    QCOMPARE(d->intMaximum(), kMaxSubdivisionLevel);
+                    highest = d->intMaximum();
                     d->setIntValue(1);
                     d->accept();
                 }
         });
         QCOMPARE(EditorDialogs::chooseMeshSubdivision(window.get(), 3), 1);
+        QCOMPARE(highest, kMaxSubdivisionLevel);
         QVERIFY2(width > 0 && width < 560, qPrintable(QString::number(width)));
         QVERIFY2(label.contains(QStringLiteral("0 to %1").arg(kMaxSubdivisionLevel)),
                  qPrintable(label));

@@ -92,9 +92,10 @@ void StatusReadout::show(const SimulationStatus& st) {
                              .arg(tr("%n hinge(s)", nullptr, st.hinges)));
     // Behind real time the paper's second lasts longer on the clock: a user read "865
     // breaks (865/s)" at 0.03× real time as 865 in the last second he waited.
-    counts_->setToolTip(tr("In brackets: the breaks in the last second of simulated time, "
-                           "which lasts longer than a second on the clock while the sheet "
-                           "runs behind real time"));
+    counts_->setToolTip(st.playing ? tr("In brackets: the breaks in the last second of simulated "
+                                        "time, which lasts longer than a second on the clock while "
+                                        "the sheet runs behind real time")
+                                   : QString());
 }
 
 } // namespace pf
