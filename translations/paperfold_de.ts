@@ -754,10 +754,6 @@
 <context>
     <name>pf::SolverPanel</name>
     <message>
-        <source>paused</source>
-        <translation>angehalten</translation>
-    </message>
-    <message>
         <source>tissue</source>
         <translation>Seidenpapier</translation>
     </message>
@@ -865,10 +861,6 @@
     <message>
         <source>%1 · paused</source>
         <translation>%1 · angehalten</translation>
-    </message>
-    <message>
-        <source>%1 vertices · %2 springs · %3 · %4</source>
-        <translation>%1 Knoten · %2 Federn · %3 · %4</translation>
     </message>
     <message>
         <source>In brackets: the breaks in the last second of simulated time, which lasts longer than a second on the clock while the sheet runs behind real time</source>

@@ -749,10 +749,6 @@
 <context>
     <name>pf::SolverPanel</name>
     <message>
-        <source>paused</source>
-        <translation>一時停止中</translation>
-    </message>
-    <message>
         <source>tissue</source>
         <translation>ティッシュ</translation>
     </message>
@@ -858,10 +854,6 @@
     <message>
         <source>%1 · paused</source>
         <translation>%1 · 一時停止中</translation>
-    </message>
-    <message>
-        <source>%1 vertices · %2 springs · %3 · %4</source>
-        <translation>頂点 %1 · ばね %2 · %3 · %4</translation>
     </message>
     <message>
         <source>In brackets: the breaks in the last second of simulated time, which lasts longer than a second on the clock while the sheet runs behind real time</source>

@@ -46,7 +46,6 @@ SolverPanel::SolverPanel(QWidget* parent) : QWidget(parent) {
     stretch_ = new QLabel(this);
     breakRateTitle_ = new QLabel(this);
     breakRate_ = new QLabel(this);
-    breakRate_->setObjectName(QStringLiteral("breakRate"));
     openChart_ = new QPushButton(this);
     int r = 0;
     for (auto [label, field] :
@@ -136,9 +135,7 @@ void SolverPanel::showStatus(const SimulationStatus& status) {
     stretch_->setText(tr("max %1 %, RMS %2 %")
                           .arg(100.0 * status.maxStretch, 0, 'f', 2)
                           .arg(100.0 * status.rmsStretch, 0, 'f', 3));
-    // Paused, the paper's time stands still: the last rate is not a live one.
-    breakRate_->setText(status.playing ? tr("%n per second", nullptr, status.breaksLastSecond)
-                                       : tr("paused"));
+    breakRate_->setText(tr("%n per second", nullptr, status.breaksLastSecond));
 }
 
 void SolverPanel::changeEvent(QEvent* event) {

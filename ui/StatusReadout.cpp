@@ -75,27 +75,19 @@ void StatusReadout::show(const SimulationStatus& st) {
                                   "are faster.")
                              : QString());
     // The counts that can be one are said with their plural forms ("1 break", "2 breaks").
-    // The rate counts the paper's last second. Paused, no time passes for the paper, and
-    // the last rate stood there as if it were live (a user read "65/s" for nine seconds).
-    if (st.playing)
-        counts_->setText(tr("%1 vertices · %2 springs · %3 (%4/s) · %5")
-                             .arg(st.vertices)
-                             .arg(st.springs)
-                             .arg(tr("%n break(s)", nullptr, st.breaks))
-                             .arg(st.breaksLastSecond)
-                             .arg(tr("%n hinge(s)", nullptr, st.hinges)));
-    else
-        counts_->setText(tr("%1 vertices · %2 springs · %3 · %4")
-                             .arg(st.vertices)
-                             .arg(st.springs)
-                             .arg(tr("%n break(s)", nullptr, st.breaks))
-                             .arg(tr("%n hinge(s)", nullptr, st.hinges)));
+    counts_->setText(tr("%1 vertices · %2 springs · %3 (%4/s) · %5")
+                         .arg(st.vertices)
+                         .arg(st.springs)
+                         .arg(tr("%n break(s)", nullptr, st.breaks))
+                         .arg(st.breaksLastSecond)
+                         .arg(tr("%n hinge(s)", nullptr, st.hinges)));
     // Behind real time the paper's second lasts longer on the clock: a user read "865
-    // breaks (865/s)" at 0.03× real time as 865 in the last second he waited.
-    counts_->setToolTip(st.playing ? tr("In brackets: the breaks in the last second of simulated "
-                                        "time, which lasts longer than a second on the clock while "
-                                        "the sheet runs behind real time")
-                                   : QString());
+    // breaks (865/s)" at 0.03× real time as 865 in the last second he waited. Paused, it
+    // is the paper's last second before the pause (the step readout says "paused"), and a
+    // step taken by hand moves it on.
+    counts_->setToolTip(tr("In brackets: the breaks in the last second of simulated time, "
+                           "which lasts longer than a second on the clock while the sheet "
+                           "runs behind real time"));
 }
 
 } // namespace pf
