@@ -356,8 +356,13 @@ EditSession::MeshSize EditSession::meshSize() const {
 
 void EditSession::beginStroke() {
     forgetFoldWatch(); // the next edit came first
-    keepSettlingWithLastStroke();
-    settledSince_ = kNone;
+    // While a redo waits, the damage since the undo is no stroke's yet: an edit that ends
+    // as an undo step gives it to the stroke before it then (keepStroke), and one that
+    // does not (a press that moved nothing) leaves it for the redo to take back.
+    if (!redoWaiting()) {
+        keepSettlingWithLastStroke();
+        settledSince_ = kNone;
+    }
     pressedFrozen_ = settle_ == Settle::Frozen;
     setSettle(Settle::None);
     strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
@@ -368,7 +373,7 @@ void EditSession::beginStroke() {
 std::optional<EditSession::StrokeEnd> EditSession::endStroke(StrokeKind kind) {
     const Sheet& s = sim_.world().sheet;
     Stroke stroke;
-    appendEvents(stroke, strokeStart_);
+    appendEvents(stroke, strokeStart_, static_cast<Index>(s.events.size()));
     bool moved = stroke.events.size() > 0 || pressedLook_.x.size() != s.verts.x.size();
     for (std::size_t i = 0; !moved && i < pressedLook_.x.size(); ++i)
         moved = (s.verts.x[i] - pressedLook_.x[i]).squaredNorm() > kStrokeMoves * kStrokeMoves;
@@ -392,9 +397,9 @@ Vec3 EditSession::boundedMove(const Vec3& from, const Vec3& to) const {
     return move;
 }
 
-void EditSession::appendEvents(Stroke& stroke, Index from) const {
+void EditSession::appendEvents(Stroke& stroke, Index from, Index to) const {
     const Sheet& s = sim_.world().sheet;
-    for (Index e = from; e < static_cast<Index>(s.events.size()); ++e) {
+    for (Index e = from; e < to; ++e) {
         const DamageEvent& ev = s.events[e];
         if (!ev.active) continue;
         StrokeEvent se{e, ev.kind, ev.edge, 0.0, 0.0, ev.step};
@@ -410,17 +415,31 @@ EditSession::Stroke* EditSession::newestApplied() {
     return done == strokes_.rend() ? nullptr : &*done;
 }
 
+bool EditSession::redoWaiting() const {
+    for (auto st = strokes_.rbegin(); st != strokes_.rend() && !st->applied; ++st)
+        if (!st->worldAfter && st->sheet == sheet_) return true;
+    return false;
+}
+
 void EditSession::keepSettlingWithLastStroke() {
+    keepSettlingWithLastStroke(static_cast<Index>(sim_.world().sheet.events.size()), look());
+}
+
+void EditSession::keepSettlingWithLastStroke(Index until, SheetLook then) {
     Stroke* newest = newestApplied();
     if (!newest) return;
     Stroke& last = *newest;
     if (last.sheet != sheet_ || last.worldAfter || last.after.x.empty()) return;
-    appendEvents(last, last.endEvent);
-    last.endEvent = static_cast<Index>(sim_.world().sheet.events.size());
-    last.after = look();
+    appendEvents(last, last.endEvent, until);
+    last.endEvent = until;
+    last.after = std::move(then);
 }
 
 EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke, StrokeKind kind) {
+    // The step drops the redos that waited (the editor's History does): the damage since
+    // their undo is the stroke's before it now, up to where this one began.
+    if (redoWaiting() && !stroke.worldAfter)
+        keepSettlingWithLastStroke(stroke.firstEvent, stroke.before);
     stroke.sheet = sheet_;
     stroke.endEvent = static_cast<Index>(sim_.world().sheet.events.size());
     stroke.applied = true;
@@ -443,6 +462,9 @@ std::optional<EditSession::StrokeEnd> EditSession::reset(const World& world) {
     if (pressed_ || folding()) return std::nullopt; // it would go on across two sheets
     finished_.reset(); // a settle of the sheet going away is no step of the new one
     releaseGrab();     // before the copy: the hand's pin is not the sheet's
+    // Its undo gives back this sheet, which a redo of the step before it then gives back
+    // too; the redos that waited are dropped.
+    keepSettlingWithLastStroke();
     Stroke st;
     st.worldBefore = std::make_shared<const World>(sim_.world());
     st.worldAfter = c.world;
@@ -501,7 +523,8 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     // Undoing the newest step ends its settling: a redo gives back the sheet as the user
     // last saw it, not as the stroke left it (a fold that had settled for two minutes
     // came back as it was at the let-go, and broke on from there).
-    if (newestApplied() == &st) keepSettlingWithLastStroke();
+    // While a later step waits for its redo, the sheet keeps what that step began on.
+    if (newestApplied() == &st && !redoWaiting()) keepSettlingWithLastStroke();
     Sheet& s = sim_.world().sheet;
     int recovered = 0;
     bool all = true;
@@ -626,7 +649,7 @@ void EditSession::settle() {
     // Not under a held tool: the stroke would go on through paper that cannot break.
     if (settle_ != Settle::None || busy()) return;
     forgetFoldWatch(); // frozen, the flap would be read only when something thaws it
-    keepSettlingWithLastStroke();
+    if (!redoWaiting()) keepSettlingWithLastStroke();
     setSettle(Settle::Settling);
     settleStart_ = sim_.world().stepCount;
     settleLook_ = look();

@@ -165,9 +165,10 @@ class EditSession {
     // its own and those the sheet made settling after it — and, when all came back, gives
     // back the sheet as it was when the stroke began: positions, velocities, plastic folds.
     // Redo does the damage again and gives back the sheet as it was when the stroke was
-    // undone (an undo of the newest step ends its settling; an older step's settling ends
-    // with the next edit). Returns the number of damage events recovered (or done again);
-    // nothing for an unknown stroke.
+    // undone if it was the newest step (its undo ends its settling), else as the next step
+    // found it (the damage the sheet made since an undo is taken back by the next redo).
+    // Returns the number of damage events recovered (or done again); nothing for an
+    // unknown stroke.
     std::optional<int> undoStroke(int stroke);
     std::optional<int> redoStroke(int stroke);
 
@@ -248,8 +249,9 @@ class EditSession {
     // Gives back `look` if the sheet has the same vertices again; false otherwise.
     bool restore(const SheetLook& look);
     std::optional<StrokeEnd> endStroke(StrokeKind kind);
-    // Adds the active damage events from `from` on to `stroke`, with their rest lengths.
-    void appendEvents(Stroke& stroke, Index from) const;
+    // Adds the active damage events from `from` up to `to` to `stroke`, with their rest
+    // lengths.
+    void appendEvents(Stroke& stroke, Index from, Index to) const;
     // The newest step that is done (later ones were undone, and are gone once an edit
     // begins); null if none is.
     Stroke* newestApplied();
@@ -257,6 +259,13 @@ class EditSession {
     // stroke ended, and the sheet as it is now, become that stroke's, so that its redo
     // gives back the sheet the next edit began on (whose redo needs that mesh).
     void keepSettlingWithLastStroke();
+    // The same with the damage log up to `until` and the sheet as `then` shows it.
+    void keepSettlingWithLastStroke(Index until, SheetLook then);
+    // An undone step of this sheet waits for its redo: it lies after the newest step that
+    // is done (the editor's History offers its redo until the next step is made). Its redo
+    // needs the mesh it began on, so no stroke before it may take the damage since as its
+    // own. (A Reset's redo needs no mesh.)
+    bool redoWaiting() const;
     // Fills in `stroke`'s start (from beginStroke) and its sheet before and after.
     void closeStroke(Stroke& stroke);
     // The way from `from` toward `to` that one step allows at kMaxToolSpeed.

@@ -50,6 +50,17 @@ std::optional<EditSession::StrokeEnd> pushStroke(EditSession& session, double fr
     return session.setTool(spherePathAt(path, to), radius, true, false);
 }
 
+// Damage the sheet makes as it settles, as the editor plays on: the first edge that can
+// break, broken by hand.
+void breakAsItSettles(EditSession& session) {
+    Sheet& s = session.simulation().world().sheet;
+    Index edge = 0;
+    while (!canBreak(s, edge)) ++edge;
+    std::vector<Vec3> normals;
+    computeVertexNormals(s, normals);
+    breakEdge(s, edge, normals, 0.25, session.world().stepCount);
+}
+
 // A session that uses every command: two strokes, an undo and a redo, a change of φ,
 // the tool placed while paused, and stepping in between.
 void scriptedSession(EditSession& session) {
@@ -346,16 +357,72 @@ class TestEditSession : public QObject {
         QVERIFY(end.has_value() && end->events > 0);
         const Topology after = topology(session.world().sheet);
         QVERIFY(session.undoStroke(end->stroke).has_value());
-        // Damage since the undo: the first edge that can break, broken by hand.
-        Sheet& s = session.simulation().world().sheet;
-        Index edge = 0;
-        while (!canBreak(s, edge)) ++edge;
-        std::vector<Vec3> normals;
-        computeVertexNormals(s, normals);
-        breakEdge(s, edge, normals, 0.25, session.world().stepCount);
+        breakAsItSettles(session);
         QCOMPARE(session.redoStroke(end->stroke), std::optional<int>(end->events));
         QCOMPARE(topology(session.world().sheet), after);
         QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
+    }
+
+    // A user's session (tissue pinned at two corners, two pushes, then Undo, Undo, Redo,
+    // Redo at 0.03x real time): the History said the second push was done again, but the
+    // sheet was as the first had left it. The sheet broke as it settled between the two
+    // undos; the first redo gave that damage back as its own, so the second push's mesh
+    // never came back and its redo did nothing. Whatever the user does between the undos
+    // and the redos that is no new undo step, the redos give back what was seen.
+    void redosInOrderGiveBackWhatWasSeenAfterTheSheetBrokeBetween_data() {
+        QTest::addColumn<int>("between");
+        QTest::newRow("nothing") << 0;
+        QTest::newRow("a press of the tool that moves nothing") << 1;
+        QTest::newRow("a settle") << 2;
+    }
+    void redosInOrderGiveBackWhatWasSeenAfterTheSheetBrokeBetween() {
+        QFETCH(int, between);
+        EditSession session(test::jacobiScene("press"));
+        const auto first = pushStroke(session, 0.0, 0.6);
+        session.advance(60);
+        const auto second = pushStroke(session, 0.6, 1.0);
+        QVERIFY(first && first->events > 0 && second && second->events > 0);
+        QCOMPARE(session.advance(30), StepStatus::Ok);
+        const Sheet seen = session.world().sheet;
+        QVERIFY(session.undoStroke(second->stroke).has_value());
+        breakAsItSettles(session);
+        if (between == 1) {
+            const Vec3 high(0.0, 0.5, 0.0);
+            session.setTool(high, 0.01, true, true);
+            QVERIFY(!session.setTool(high, 0.01, true, false).has_value());
+        } else if (between == 2) {
+            session.settle(); // chosen, and undone before it froze
+        }
+        QVERIFY(session.undoStroke(first->stroke).has_value());
+        QVERIFY(session.redoStroke(first->stroke).has_value());
+        const auto redone = session.redoStroke(second->stroke);
+        QVERIFY(redone.has_value());
+        QVERIFY2(*redone > 0, "the second push's redo broke nothing");
+        QCOMPARE(topology(session.world().sheet), topology(seen));
+        QVERIFY(session.world().sheet.verts.x == seen.verts.x);
+        QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
+    }
+
+    // The same damage between an undo and a new push: the push's redo, after an undo of the
+    // push and of the stroke before it and a redo of that stroke, needs the mesh the push
+    // began on, that damage included.
+    void aStrokeMadeAfterAnUndoIsRedoneOnTheMeshItBeganOn() {
+        EditSession session(test::jacobiScene("press"));
+        const auto first = pushStroke(session, 0.0, 0.6);
+        session.advance(60);
+        const auto second = pushStroke(session, 0.6, 1.0);
+        QVERIFY(first && first->events > 0 && second && second->events > 0);
+        QVERIFY(session.undoStroke(second->stroke).has_value());
+        breakAsItSettles(session);
+        const auto third = pushStroke(session, 1.0, 1.3);
+        QVERIFY(third.has_value());
+        const Sheet seen = session.world().sheet;
+        QVERIFY(session.undoStroke(third->stroke).has_value());
+        QVERIFY(session.undoStroke(first->stroke).has_value());
+        QVERIFY(session.redoStroke(first->stroke).has_value());
+        QCOMPARE(session.redoStroke(third->stroke), std::optional<int>(third->events));
+        QCOMPARE(topology(session.world().sheet), topology(seen));
+        QVERIFY(session.world().sheet.verts.x == seen.verts.x);
     }
 
     void redoIsRefusedOnAMeshAnotherStrokeChanged() {
@@ -1110,7 +1177,7 @@ class TestEditSession : public QObject {
         QVERIFY(recovered && *recovered >= crumple->events);
         QCOMPARE(topology(session.world().sheet), topology(fresh.sheet));
         QVERIFY(session.world().sheet.verts.x == fresh.sheet.verts.x);
-        // Redo: the crumpled sheet as it was when its stroke was undone, settling and all.
+        // Redo: the crumpled sheet as it was when Reset was chosen, settling and all.
         QCOMPARE(session.redoStroke(crumple->stroke), recovered);
         QCOMPARE(topology(session.world().sheet), crumpled);
         // Redo resets again; a reset is refused while the tool is pressed.
