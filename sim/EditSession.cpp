@@ -510,6 +510,9 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     c.stroke = stroke;
     record(std::move(c));
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size()) || folding()) return std::nullopt;
+    // A step that is not done (undone, or its redo refused) has nothing to take back: from
+    // where it once began, recovery would take the damage of the steps done since.
+    if (!strokes_[static_cast<std::size_t>(stroke)].applied) return std::nullopt;
     forgetFoldWatch(); // recovery renumbers vertices
     const Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
     if (st.worldAfter) { // a Reset
@@ -550,6 +553,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
     c.stroke = stroke;
     record(std::move(c));
     if (stroke < 0 || stroke >= static_cast<int>(strokes_.size()) || folding()) return std::nullopt;
+    if (strokes_[static_cast<std::size_t>(stroke)].applied) return std::nullopt; // done already
     forgetFoldWatch(); // recovery renumbers vertices
     if (Stroke& reset = strokes_[static_cast<std::size_t>(stroke)]; reset.worldAfter) {
         if (sheet_ != reset.sheetBefore || pressed_) return std::nullopt;
@@ -575,7 +579,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
     // Edge ids are the stroke's only on the mesh it began on: anything else (another
     // stroke still applied) would break other edges.
     if (!(meshSize() == st.pressedOn) || s.events.size() + st.events.size() > kMaxDamageEvents)
-        return 0;
+        return std::nullopt;
     st.firstEvent = static_cast<Index>(s.events.size());
     int reapplied = 0;
     std::vector<Vec3> normals;

@@ -168,7 +168,8 @@ class EditSession {
     // undone if it was the newest step (its undo ends its settling), else as the next step
     // found it (the damage the sheet made since an undo is taken back by the next redo).
     // Returns the number of damage events recovered (or done again); nothing for an
-    // unknown stroke.
+    // unknown stroke, or one refused: an undo of a step not done, a redo of one done, a
+    // redo onto a mesh other than the one the step began on.
     std::optional<int> undoStroke(int stroke);
     std::optional<int> redoStroke(int stroke);
 

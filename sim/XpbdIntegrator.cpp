@@ -494,8 +494,13 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
         ended_.v = V.v;
         relaxWhatTheProjectionLeft(sheet, dt);
         retrying_ = true;
+        // Cleared however the second start ends (an allocation that throws included):
+        // left set, no later step would ever start again.
+        const struct EndRetry {
+            bool& retrying;
+            ~EndRetry() { retrying = false; }
+        } endRetry{retrying_};
         projectStretch(sheet, dt, iterations, compliance);
-        retrying_ = false;
         if (worstProjectedStretch(sheet) > left) {
             V.x = ended_.x;
             V.v = ended_.v;

@@ -436,9 +436,20 @@ class TestEditSession : public QObject {
         QVERIFY(session.undoStroke(second->stroke).has_value());
         QVERIFY(session.undoStroke(first->stroke).has_value());
         const Topology flat = topology(session.world().sheet);
-        QCOMPARE(session.redoStroke(second->stroke), std::optional<int>(0));
+        QCOMPARE(session.redoStroke(second->stroke), std::optional<int>());
         QCOMPARE(topology(session.world().sheet), flat);
         QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
+        // The refused step stays undone: its undo is refused too, and takes nothing of the
+        // first stroke's, done again since (an undo after a refused redo once took the
+        // damage of every step after where it began, 1,093 vertices down to 503).
+        const auto redone = session.redoStroke(first->stroke);
+        QVERIFY(redone && *redone >= first->events);
+        const Topology firstDone = topology(session.world().sheet);
+        QCOMPARE(session.undoStroke(second->stroke), std::optional<int>());
+        QCOMPARE(topology(session.world().sheet), firstDone);
+        // Nor is a step that is done done twice.
+        QCOMPARE(session.redoStroke(first->stroke), std::optional<int>());
+        QCOMPARE(topology(session.world().sheet), firstDone);
     }
 
     void undoAndRedoOfStrokesInAnyOrderKeepAValidMesh() {
@@ -471,10 +482,12 @@ class TestEditSession : public QObject {
         std::vector<bool> done(3, true);
         for (int round = 0; round < 60; ++round) {
             const int k = int(rng() % 3);
+            // A redo onto a mesh another stroke changed is refused, and the step stays
+            // undone (its undo is refused in turn).
             const auto n = done[k] ? session.undoStroke(k) : session.redoStroke(k);
-            QVERIFY(n.has_value());
-            QVERIFY(*n >= 0);
-            done[k] = !done[k];
+            QVERIFY(!n || *n >= 0);
+            QVERIFY(n || !done[k]);
+            if (n) done[k] = !done[k];
             QCOMPARE(session.advance(2), StepStatus::Ok);
             QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
         }
