@@ -421,15 +421,20 @@ bool EditSession::redoWaiting() const {
     return false;
 }
 
-void EditSession::keepSettlingWithLastStroke() {
-    keepSettlingWithLastStroke(static_cast<Index>(sim_.world().sheet.events.size()), look());
+void EditSession::keepSettlingWithLastStroke(bool forALaterRedo) {
+    keepSettlingWithLastStroke(static_cast<Index>(sim_.world().sheet.events.size()), look(),
+                               forALaterRedo);
 }
 
-void EditSession::keepSettlingWithLastStroke(Index until, SheetLook then) {
+void EditSession::keepSettlingWithLastStroke(Index until, SheetLook then, bool forALaterRedo) {
     Stroke* newest = newestApplied();
     if (!newest) return;
     Stroke& last = *newest;
     if (last.sheet != sheet_ || last.worldAfter || last.after.x.empty()) return;
+    if (!forALaterRedo)
+        last.sinceLaterUndo.reset();
+    else if (!last.sinceLaterUndo)
+        last.sinceLaterUndo = last.events.size();
     appendEvents(last, last.endEvent, until);
     last.endEvent = until;
     last.after = std::move(then);
@@ -527,7 +532,9 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     // last saw it, not as the stroke left it (a fold that had settled for two minutes
     // came back as it was at the let-go, and broke on from there).
     // While a later step waits for its redo, the sheet keeps what that step began on.
-    if (newestApplied() == &st && !redoWaiting()) keepSettlingWithLastStroke();
+    // While a later step waits for its redo, what the sheet broke since is kept apart: this
+    // step's redo gives it back, and the later step's redo takes it back first.
+    if (newestApplied() == &st) keepSettlingWithLastStroke(redoWaiting());
     Sheet& s = sim_.world().sheet;
     int recovered = 0;
     bool all = true;
@@ -583,7 +590,11 @@ std::optional<int> EditSession::redoStroke(int stroke) {
     st.firstEvent = static_cast<Index>(s.events.size());
     int reapplied = 0;
     std::vector<Vec3> normals;
-    for (StrokeEvent& se : st.events) {
+    Index laterUndoFrom = kNone; // where the damage since a later step's undo begins again
+    for (std::size_t k = 0; k < st.events.size(); ++k) {
+        StrokeEvent& se = st.events[k];
+        if (st.sinceLaterUndo && k == *st.sinceLaterUndo)
+            laterUndoFrom = static_cast<Index>(s.events.size());
         // Undone in reverse order, the edges have their old ids again.
         if (se.edge < 0 || se.edge >= s.springs.size()) continue;
         if (se.kind == EventKind::Break) {
@@ -603,7 +614,8 @@ std::optional<int> EditSession::redoStroke(int stroke) {
     setSettle(Settle::None);
     st.endEvent = static_cast<Index>(s.events.size());
     st.applied = true;
-    settledSince_ = st.endEvent;
+    // The later step that waits began on the mesh without the damage since its undo.
+    settledSince_ = laterUndoFrom != kNone ? laterUndoFrom : st.endEvent;
     const bool restored = reapplied == static_cast<int>(st.events.size()) && restore(st.after);
     if (st.settle && restored && !pressed_) freeze();
     if (pressed_) beginStroke();

@@ -165,8 +165,9 @@ class EditSession {
     // its own and those the sheet made settling after it — and, when all came back, gives
     // back the sheet as it was when the stroke began: positions, velocities, plastic folds.
     // Redo does the damage again and gives back the sheet as it was when the stroke was
-    // undone if it was the newest step (its undo ends its settling), else as the next step
-    // found it (the damage the sheet made since an undo is taken back by the next redo).
+    // undone (an undo of the newest step done ends its settling); the damage the sheet
+    // made since an undo is taken back by the next redo, and what a step under a waiting
+    // redo took of it (Stroke::sinceLaterUndo) by that redo.
     // Returns the number of damage events recovered (or done again); nothing for an
     // unknown stroke, or one refused: an undo of a step not done, a redo of one done, a
     // redo onto a mesh other than the one the step began on.
@@ -233,6 +234,10 @@ class EditSession {
         // what the sheet breaks settling after it, until the next edit, is its own too.
         Index endEvent = 0;
         bool applied = true;
+        // Where in `events` the damage begins that the sheet made after a later step was
+        // undone, while that step waits for its redo: a redo of this step gives it back
+        // (the sheet as the user saw it), and the later step's redo takes it back first.
+        std::optional<std::size_t> sinceLaterUndo;
         bool settle = false;       // a Settle: redo freezes the sheet again
         bool frozenBefore = false; // began on a settled sheet: undo freezes it again
         // A pin: these vertices were set to `pinnedTo` (undo sets them back).
@@ -259,9 +264,11 @@ class EditSession {
     // When the next edit begins: the damage the sheet made settling since the newest
     // stroke ended, and the sheet as it is now, become that stroke's, so that its redo
     // gives back the sheet the next edit began on (whose redo needs that mesh).
-    void keepSettlingWithLastStroke();
+    // `forALaterRedo`: an undone step after it waits for its redo, which needs the mesh
+    // without this damage (Stroke::sinceLaterUndo).
+    void keepSettlingWithLastStroke(bool forALaterRedo = false);
     // The same with the damage log up to `until` and the sheet as `then` shows it.
-    void keepSettlingWithLastStroke(Index until, SheetLook then);
+    void keepSettlingWithLastStroke(Index until, SheetLook then, bool forALaterRedo = false);
     // An undone step of this sheet waits for its redo: it lies after the newest step that
     // is done (the editor's History offers its redo until the next step is made). Its redo
     // needs the mesh it began on, so no stroke before it may take the damage since as its

@@ -393,8 +393,13 @@ class TestEditSession : public QObject {
         } else if (between == 2) {
             session.settle(); // chosen, and undone before it froze
         }
+        // What the user sees when choosing the second Undo, and gets back from the first
+        // Redo (it once gave back the sheet as the first undo had left it, 30 s earlier).
+        const Sheet seenAtTheSecondUndo = session.world().sheet;
         QVERIFY(session.undoStroke(first->stroke).has_value());
         QVERIFY(session.redoStroke(first->stroke).has_value());
+        QCOMPARE(topology(session.world().sheet), topology(seenAtTheSecondUndo));
+        QVERIFY(session.world().sheet.verts.x == seenAtTheSecondUndo.verts.x);
         const auto redone = session.redoStroke(second->stroke);
         QVERIFY(redone.has_value());
         QVERIFY2(*redone > 0, "the second push's redo broke nothing");
