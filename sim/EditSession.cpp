@@ -472,6 +472,7 @@ std::optional<EditSession::StrokeEnd> EditSession::reset(const World& world) {
     keepSettlingWithLastStroke();
     Stroke st;
     st.worldBefore = std::make_shared<const World>(sim_.world());
+    st.frozenBefore = settle_ == Settle::Frozen; // its undo freezes it again
     st.worldAfter = c.world;
     st.sheetBefore = sheet_;
     // Numbered by the Reset's own undo step, unique in the session (0 is the first).
@@ -523,6 +524,7 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     if (st.worldAfter) { // a Reset
         if (sheet_ != st.sheetAfter || pressed_) return std::nullopt;
         swapSheet(*st.worldBefore, st.sheetBefore);
+        if (st.frozenBefore) freeze();
         strokes_[static_cast<std::size_t>(stroke)].applied = false;
         return 0;
     }
@@ -567,6 +569,7 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         // The sheet moved on since the undo: an undo of this redo gives back that.
         releaseGrab();
         reset.worldBefore = std::make_shared<const World>(sim_.world());
+        reset.frozenBefore = settle_ == Settle::Frozen;
         swapSheet(*reset.worldAfter, reset.sheetAfter);
         reset.applied = true;
         return 0;

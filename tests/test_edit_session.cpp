@@ -612,6 +612,21 @@ class TestEditSession : public QObject {
         QCOMPARE(session.world().sheet.verts.x, kept);
         session.advance(100);
         QCOMPARE(session.world().sheet.verts.x, kept);
+
+        // So does an undo of a Reset (a user's settled sheet came back moving, at 0.87x
+        // real time), and its redo the fresh sheet, moving.
+        const auto reset = session.reset(test::jacobiScene("press"));
+        QVERIFY(reset);
+        QVERIFY(!session.frozen());
+        QCOMPARE(session.undoStroke(reset->stroke), std::optional<int>(0));
+        QVERIFY(session.frozen());
+        QCOMPARE(session.world().sheet.verts.x, kept);
+        session.advance(100);
+        QCOMPARE(session.world().sheet.verts.x, kept);
+        QCOMPARE(session.redoStroke(reset->stroke), std::optional<int>(0));
+        QVERIFY(!session.frozen());
+        QCOMPARE(session.undoStroke(reset->stroke), std::optional<int>(0));
+        QVERIFY(session.frozen());
     }
 
     // Under a held tool Settle does nothing: the push would go on through paper that
