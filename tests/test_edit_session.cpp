@@ -50,6 +50,16 @@ std::optional<EditSession::StrokeEnd> pushStroke(EditSession& session, double fr
     return session.setTool(spherePathAt(path, to), radius, true, false);
 }
 
+// Two strokes along the press path, a quarter second apart, both breaking the sheet.
+std::optional<std::pair<EditSession::StrokeEnd, EditSession::StrokeEnd>>
+pushTwice(EditSession& session) {
+    const auto first = pushStroke(session, 0.0, 0.6);
+    session.advance(60);
+    const auto second = pushStroke(session, 0.6, 1.0);
+    if (!first || first->events == 0 || !second || second->events == 0) return std::nullopt;
+    return std::pair{*first, *second};
+}
+
 // Damage the sheet makes as it settles, as the editor plays on: the first edge that can
 // break, broken by hand.
 void breakAsItSettles(EditSession& session) {
@@ -378,13 +388,12 @@ class TestEditSession : public QObject {
     void redosInOrderGiveBackWhatWasSeenAfterTheSheetBrokeBetween() {
         QFETCH(int, between);
         EditSession session(test::jacobiScene("press"));
-        const auto first = pushStroke(session, 0.0, 0.6);
-        session.advance(60);
-        const auto second = pushStroke(session, 0.6, 1.0);
-        QVERIFY(first && first->events > 0 && second && second->events > 0);
+        const auto pushes = pushTwice(session);
+        QVERIFY(pushes);
+        const auto& [first, second] = *pushes;
         QCOMPARE(session.advance(30), StepStatus::Ok);
         const Sheet seen = session.world().sheet;
-        QVERIFY(session.undoStroke(second->stroke).has_value());
+        QVERIFY(session.undoStroke(second.stroke).has_value());
         breakAsItSettles(session);
         if (between == 1) {
             const Vec3 high(0.0, 0.5, 0.0);
@@ -396,11 +405,11 @@ class TestEditSession : public QObject {
         // What the user sees when choosing the second Undo, and gets back from the first
         // Redo (it once gave back the sheet as the first undo had left it, 30 s earlier).
         const Sheet seenAtTheSecondUndo = session.world().sheet;
-        QVERIFY(session.undoStroke(first->stroke).has_value());
-        QVERIFY(session.redoStroke(first->stroke).has_value());
+        QVERIFY(session.undoStroke(first.stroke).has_value());
+        QVERIFY(session.redoStroke(first.stroke).has_value());
         QCOMPARE(topology(session.world().sheet), topology(seenAtTheSecondUndo));
         QVERIFY(session.world().sheet.verts.x == seenAtTheSecondUndo.verts.x);
-        const auto redone = session.redoStroke(second->stroke);
+        const auto redone = session.redoStroke(second.stroke);
         QVERIFY(redone.has_value());
         QVERIFY2(*redone > 0, "the second push's redo broke nothing");
         QCOMPARE(topology(session.world().sheet), topology(seen));
@@ -413,18 +422,17 @@ class TestEditSession : public QObject {
     // began on, that damage included.
     void aStrokeMadeAfterAnUndoIsRedoneOnTheMeshItBeganOn() {
         EditSession session(test::jacobiScene("press"));
-        const auto first = pushStroke(session, 0.0, 0.6);
-        session.advance(60);
-        const auto second = pushStroke(session, 0.6, 1.0);
-        QVERIFY(first && first->events > 0 && second && second->events > 0);
-        QVERIFY(session.undoStroke(second->stroke).has_value());
+        const auto pushes = pushTwice(session);
+        QVERIFY(pushes);
+        const auto& [first, second] = *pushes;
+        QVERIFY(session.undoStroke(second.stroke).has_value());
         breakAsItSettles(session);
         const auto third = pushStroke(session, 1.0, 1.3);
         QVERIFY(third.has_value());
         const Sheet seen = session.world().sheet;
         QVERIFY(session.undoStroke(third->stroke).has_value());
-        QVERIFY(session.undoStroke(first->stroke).has_value());
-        QVERIFY(session.redoStroke(first->stroke).has_value());
+        QVERIFY(session.undoStroke(first.stroke).has_value());
+        QVERIFY(session.redoStroke(first.stroke).has_value());
         QCOMPARE(session.redoStroke(third->stroke), std::optional<int>(third->events));
         QCOMPARE(topology(session.world().sheet), topology(seen));
         QVERIFY(session.world().sheet.verts.x == seen.verts.x);
@@ -434,26 +442,25 @@ class TestEditSession : public QObject {
         // Two strokes undone, the second redone first: its edge ids belong to the mesh
         // the first left, so it is refused and nothing breaks.
         EditSession session(test::jacobiScene("press"));
-        const auto first = pushStroke(session, 0.0, 0.6);
-        session.advance(60);
-        const auto second = pushStroke(session, 0.6, 1.0);
-        QVERIFY(first && first->events > 0 && second && second->events > 0);
-        QVERIFY(session.undoStroke(second->stroke).has_value());
-        QVERIFY(session.undoStroke(first->stroke).has_value());
+        const auto pushes = pushTwice(session);
+        QVERIFY(pushes);
+        const auto& [first, second] = *pushes;
+        QVERIFY(session.undoStroke(second.stroke).has_value());
+        QVERIFY(session.undoStroke(first.stroke).has_value());
         const Topology flat = topology(session.world().sheet);
-        QCOMPARE(session.redoStroke(second->stroke), std::optional<int>());
+        QCOMPARE(session.redoStroke(second.stroke), std::optional<int>());
         QCOMPARE(topology(session.world().sheet), flat);
         QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
         // The refused step stays undone: its undo is refused too, and takes nothing of the
         // first stroke's, done again since (an undo after a refused redo once took the
         // damage of every step after where it began, 1,093 vertices down to 503).
-        const auto redone = session.redoStroke(first->stroke);
-        QVERIFY(redone && *redone >= first->events);
+        const auto redone = session.redoStroke(first.stroke);
+        QVERIFY(redone && *redone >= first.events);
         const Topology firstDone = topology(session.world().sheet);
-        QCOMPARE(session.undoStroke(second->stroke), std::optional<int>());
+        QCOMPARE(session.undoStroke(second.stroke), std::optional<int>());
         QCOMPARE(topology(session.world().sheet), firstDone);
         // Nor is a step that is done done twice.
-        QCOMPARE(session.redoStroke(first->stroke), std::optional<int>());
+        QCOMPARE(session.redoStroke(first.stroke), std::optional<int>());
         QCOMPARE(topology(session.world().sheet), firstDone);
     }
 
