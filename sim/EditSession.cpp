@@ -430,14 +430,16 @@ void EditSession::keepSettlingWithLastStroke(Index until, SheetLook then, bool f
     Stroke* newest = newestApplied();
     if (!newest) return;
     Stroke& last = *newest;
-    if (last.sheet != sheet_ || last.worldAfter || last.after.x.empty()) return;
+    if (last.sheet != sheet_ || last.worldAfter) return;
     if (!forALaterRedo)
         last.sinceLaterUndo.reset();
     else if (!last.sinceLaterUndo)
         last.sinceLaterUndo = last.events.size();
+    // The damage even of a step too old to keep its look (kStrokesWithLook): the next
+    // step began on the mesh with it.
     appendEvents(last, last.endEvent, until);
     last.endEvent = until;
-    last.after = std::move(then);
+    if (!last.after.x.empty()) last.after = std::move(then);
 }
 
 EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke, StrokeKind kind) {
@@ -533,7 +535,6 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     // Undoing the newest step ends its settling: a redo gives back the sheet as the user
     // last saw it, not as the stroke left it (a fold that had settled for two minutes
     // came back as it was at the let-go, and broke on from there).
-    // While a later step waits for its redo, the sheet keeps what that step began on.
     // While a later step waits for its redo, what the sheet broke since is kept apart: this
     // step's redo gives it back, and the later step's redo takes it back first.
     if (newestApplied() == &st) keepSettlingWithLastStroke(redoWaiting());
@@ -575,17 +576,29 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         return 0;
     }
     if (strokes_[static_cast<std::size_t>(stroke)].sheet != sheet_) return std::nullopt;
-    releaseGrab();
     World& w = sim_.world();
     Sheet& s = w.sheet;
+    // A stroke under way that broke the sheet: its damage lies beyond what the redo takes
+    // back first, newest first, so it would go too (and belong to no step).
+    if (pressed_ || grabbing())
+        for (Index e = strokeStart_; e < static_cast<Index>(s.events.size()); ++e)
+            if (s.events[e].active) return std::nullopt;
+    releaseGrab();
     Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
     // What the sheet broke settling since the last undo or redo goes: the redo gives
     // back the sheet as the next edit found it, and its edge ids are those of the mesh
     // the stroke began on, which that damage changed (the editor plays on between the
     // clicks of several redos).
-    if (settledSince_ != kNone)
+    if (settledSince_ != kNone) {
         for (Index e = static_cast<Index>(s.events.size()) - 1; e >= settledSince_; --e)
             if (s.events[e].active) recoverEvent(s, e);
+        // What the step below took of it while this one waited is gone now: done again,
+        // that step must not bring it back.
+        if (Stroke* below = newestApplied(); below && below->sinceLaterUndo) {
+            below->events.resize(*below->sinceLaterUndo);
+            below->sinceLaterUndo.reset();
+        }
+    }
     // Edge ids are the stroke's only on the mesh it began on: anything else (another
     // stroke still applied) would break other edges.
     if (!(meshSize() == st.pressedOn) || s.events.size() + st.events.size() > kMaxDamageEvents)

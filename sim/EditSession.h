@@ -269,10 +269,12 @@ class EditSession {
     void keepSettlingWithLastStroke(bool forALaterRedo = false);
     // The same with the damage log up to `until` and the sheet as `then` shows it.
     void keepSettlingWithLastStroke(Index until, SheetLook then, bool forALaterRedo = false);
-    // An undone step of this sheet waits for its redo: it lies after the newest step that
-    // is done (the editor's History offers its redo until the next step is made). Its redo
-    // needs the mesh it began on, so no stroke before it may take the damage since as its
-    // own. (A Reset's redo needs no mesh.)
+    // An undone step of this sheet may wait for its redo: it lies after the newest step
+    // that is done (the editor's History offers its redo until the next step is made;
+    // this also sees steps the History dropped behind an undone Reset, which then only
+    // keep damage apart that nothing takes back). Its redo needs the mesh it began on, so
+    // no stroke before it may take the damage since as its own. (A Reset's redo needs no
+    // mesh.)
     bool redoWaiting() const;
     // Fills in `stroke`'s start (from beginStroke) and its sheet before and after.
     void closeStroke(Stroke& stroke);

@@ -495,7 +495,7 @@ void XpbdIntegrator::projectStretch(Sheet& sheet, double dt, int iterations, dou
         relaxWhatTheProjectionLeft(sheet, dt);
         retrying_ = true;
         // Cleared however the second start ends (an allocation that throws included):
-        // left set, no later step would ever start again.
+        // left set, no later step would get its second start.
         const struct EndRetry {
             bool& retrying;
             ~EndRetry() { retrying = false; }

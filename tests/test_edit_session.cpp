@@ -417,6 +417,70 @@ class TestEditSession : public QObject {
         QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
     }
 
+    // Once the second push's redo has taken back what the first kept apart for it, the
+    // first holds it no more: a second round of undos and redos, and one with a new push
+    // in it, give back what was seen each time (a stale share gave it back unseen, and
+    // refused the new push's redo).
+    void aSecondRoundOfUndosAndRedosGivesBackWhatWasSeen() {
+        EditSession session(test::jacobiScene("press"));
+        const auto pushes = pushTwice(session);
+        QVERIFY(pushes);
+        const auto& [first, second] = *pushes;
+        const auto undoBothAndRedoTheFirst = [&] {
+            QVERIFY(session.undoStroke(second.stroke));
+            breakAsItSettles(session);
+            const Sheet seen = session.world().sheet;
+            QVERIFY(session.undoStroke(first.stroke));
+            QVERIFY(session.redoStroke(first.stroke));
+            QCOMPARE(topology(session.world().sheet), topology(seen));
+            QVERIFY(session.world().sheet.verts.x == seen.verts.x);
+        };
+        for (int round = 0; round < 2; ++round) {
+            const Sheet seen = session.world().sheet;
+            undoBothAndRedoTheFirst();
+            if (QTest::currentTestFailed()) return;
+            QVERIFY(session.redoStroke(second.stroke));
+            QCOMPARE(topology(session.world().sheet), topology(seen));
+            QVERIFY(session.world().sheet.verts.x == seen.verts.x);
+        }
+        // A new push drops the second's redo; it and the first undone, both come back.
+        QVERIFY(session.undoStroke(second.stroke));
+        breakAsItSettles(session);
+        const auto third = pushStroke(session, 1.0, 1.3);
+        QVERIFY(third);
+        const Sheet seen = session.world().sheet;
+        QVERIFY(session.undoStroke(third->stroke));
+        QVERIFY(session.undoStroke(first.stroke));
+        QVERIFY(session.redoStroke(first.stroke));
+        QVERIFY(session.redoStroke(third->stroke));
+        QCOMPARE(topology(session.world().sheet), topology(seen));
+        QVERIFY(session.world().sheet.verts.x == seen.verts.x);
+        QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
+    }
+
+    // A redo while a push that broke the sheet is held is refused before it takes back
+    // anything: the push's breaks would go with the damage since the undo.
+    void aRedoWhileABreakingPushIsHeldIsRefused() {
+        EditSession session(test::jacobiScene("press"));
+        const auto pushes = pushTwice(session);
+        QVERIFY(pushes);
+        QVERIFY(session.undoStroke(pushes->second.stroke));
+        const std::vector<SphereKey> path = makeScene("press")->script.sphereKeys;
+        const double radius = session.world().sphere.radius;
+        session.setTool(spherePathAt(path, 1.0), radius, true, false);
+        session.placeToolAtTarget();
+        const Index before = topology(session.world().sheet).activeEvents;
+        for (double t = 1.0; t < 1.3 && topology(session.world().sheet).activeEvents == before;
+             t += 1.0 / 60.0) {
+            session.setTool(spherePathAt(path, t), radius, true, true);
+            QCOMPARE(session.advance(4), StepStatus::Ok);
+        }
+        const Topology held = topology(session.world().sheet);
+        QVERIFY2(held.activeEvents > before, "the held push broke nothing");
+        QCOMPARE(session.redoStroke(pushes->second.stroke), std::optional<int>());
+        QCOMPARE(topology(session.world().sheet), held);
+    }
+
     // The same damage between an undo and a new push: the push's redo, after an undo of the
     // push and of the stroke before it and a redo of that stroke, needs the mesh the push
     // began on, that damage included.

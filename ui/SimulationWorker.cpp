@@ -113,8 +113,9 @@ void SimulationWorker::undoStroke(int stroke) {
 void SimulationWorker::redoStroke(int stroke) {
     editedSinceShown_ = true;
     const auto reapplied = session_.redoStroke(stroke);
-    if (!reapplied) return;
-    emit strokeRedone(stroke, *reapplied);
+    if (reapplied) emit strokeRedone(stroke, *reapplied);
+    // Refused, it may still have taken back the damage since the last undo or redo (the
+    // session's redoStroke): shown, also while paused.
     publish(0.0);
 }
 
