@@ -458,6 +458,51 @@ class TestEditSession : public QObject {
         QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
     }
 
+    // Strokes made after a Reset, undone back past it and redone: each redo gives back
+    // what was seen at its undo (a helper's session got a flat sheet from an earlier round).
+    void strokesAfterAResetAreRedoneAsSeenAcrossItsUndoAndRedo() {
+        EditSession session(test::jacobiScene("press"));
+        QVERIFY(pushStroke(session, 0.0, 0.5));
+        const auto reset = session.reset(test::jacobiScene("press"));
+        QVERIFY(reset);
+        QCOMPARE(session.advance(12), StepStatus::Ok);
+        // Pinned at two corners, as the user's was.
+        const auto& V = session.world().sheet.verts;
+        Index a = 0, b = 0;
+        for (Index i = 0; i < V.size(); ++i) {
+            if (V.x[i].z() - V.x[i].x() > V.x[a].z() - V.x[a].x()) a = i;
+            if (V.x[i].z() + V.x[i].x() > V.x[b].z() + V.x[b].x()) b = i;
+        }
+        const auto pinA = session.pin(V.x[a], 0.005);
+        const auto pinB = session.pin(V.x[b], 0.005);
+        QVERIFY(pinA && pinB);
+        const auto pushes = pushTwice(session);
+        QVERIFY(pushes);
+        const auto& [first, second] = *pushes;
+        for (int round = 0; round < 3; ++round) {
+            QCOMPARE(session.advance(20), StepStatus::Ok);
+            const Sheet atSecondUndo = session.world().sheet;
+            QVERIFY(session.undoStroke(second.stroke));
+            breakAsItSettles(session);
+            const Sheet atFirstUndo = session.world().sheet;
+            QVERIFY(session.undoStroke(first.stroke));
+            if (round > 0) {
+                QVERIFY(session.undoStroke(pinB->stroke));
+                QVERIFY(session.undoStroke(pinA->stroke));
+                QVERIFY(session.undoStroke(reset->stroke));
+                QVERIFY(session.redoStroke(reset->stroke));
+                QVERIFY(session.redoStroke(pinA->stroke));
+                QVERIFY(session.redoStroke(pinB->stroke));
+            }
+            QVERIFY(session.redoStroke(first.stroke));
+            QCOMPARE(topology(session.world().sheet), topology(atFirstUndo));
+            QVERIFY(session.world().sheet.verts.x == atFirstUndo.verts.x);
+            QVERIFY(session.redoStroke(second.stroke));
+            QCOMPARE(topology(session.world().sheet), topology(atSecondUndo));
+            QVERIFY(session.world().sheet.verts.x == atSecondUndo.verts.x);
+        }
+    }
+
     // A redo while a push that broke the sheet is held is refused before it takes back
     // anything: the push's breaks would go with the damage since the undo.
     void aRedoWhileABreakingPushIsHeldIsRefused() {
