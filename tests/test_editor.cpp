@@ -327,6 +327,9 @@ class TestEditor : public QObject {
         QCOMPARE(window->viewport()->renderOptions().sigma, 0.50);
         QCOMPARE(window->panel()->sigmaSlider()->value(), 50);
         // The history starts with the file opened, and a new sheet with a new sheet.
+        // The keys below go through the window's shortcuts, which need it active.
+        window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(window.get()));
         auto* history = window->findChild<QUndoView*>();
         QVERIFY(history);
         QCOMPARE(history->emptyLabel(), QStringLiteral("<sigma.paper>"));
@@ -405,6 +408,78 @@ class TestEditor : public QObject {
         window->action("redo")->trigger();
         QVERIFY(waitForCount(redone, 1));
         QCOMPARE(settledStatus(*window).breaks, after.breaks);
+    }
+
+    // While the mouse holds the paper (Push or Grab), the step it is making is not in the
+    // History yet: Ctrl+Z undid the step before it and took the held push's breaks with
+    // it, and a redo the session refused still moved the History. So Undo, Redo and the
+    // History wait until the button is let go, as they do while a fold is under way.
+    void undoAndRedoWaitWhileTheMouseHoldsThePaper() {
+        window->panel()->phiSlider()->setValue(30);
+        window->panel()->phiSlider()->setValue(40);
+        window->undoStack()->undo(); // one step to undo, one to redo
+        QCOMPARE(window->undoStack()->index(), 1);
+        // The keys below go through the window's shortcuts, which need it active.
+        window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(window.get()));
+        auto* history = window->findChild<QUndoView*>();
+        QVERIFY(history);
+        Viewport* view = window->viewport();
+        const QPoint p = viewportCentre(*window);
+        QVERIFY(pickAt(*window, p) && pickAt(*window, p)->onSheet);
+        const auto free = [&] {
+            return window->action("undo")->isEnabled() && window->action("redo")->isEnabled() &&
+                   history->isEnabled();
+        };
+        const auto held = [&] {
+            return !window->action("undo")->isEnabled() && !window->action("redo")->isEnabled() &&
+                   !history->isEnabled();
+        };
+        for (const char* tool : {"tool.push", "tool.grab"}) {
+            window->action(tool)->trigger();
+            QVERIFY(free());
+            moveMouse(view, p);
+            QTest::mousePress(view, Qt::LeftButton, {}, p);
+            QVERIFY2(held(), tool);
+            QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+            QCOMPARE(window->undoStack()->index(), 1);
+            QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+            QCOMPARE(window->undoStack()->index(), 1);
+            moveMouse(view, p + QPoint(6, 0), Qt::LeftButton);
+            QVERIFY2(held(), tool);
+            QTest::mouseRelease(view, Qt::LeftButton, {}, p + QPoint(6, 0));
+            QVERIFY2(free(), tool);
+            moveMouse(view, p);
+            // Paused, the press moved nothing: no step was made, the redo still waits.
+            window->simulation()->sync();
+            QCoreApplication::processEvents();
+            QCOMPARE(window->undoStack()->index(), 1);
+            QCOMPARE(window->undoStack()->count(), 2);
+        }
+        // A tool change while held lets go, and the History is free again.
+        window->action("tool.push")->trigger();
+        QTest::mousePress(view, Qt::LeftButton, {}, p);
+        QVERIFY(held());
+        window->action("tool.pin")->trigger();
+        QVERIFY(free());
+        QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+        QVERIFY(free());
+        // Pin makes its step at the click, so nothing waits for it.
+        QCOMPARE(window->undoStack()->index(), 1);
+    }
+
+    // An edit's status carries the cost of the last step taken, not 0: after an undo a
+    // user read "step 0 µs · 0.11× real time".
+    void anEditShowsWhatTheLastStepCost() {
+        window->simulation()->stepOnce();
+        const double stepped = settledStatus(*window).stepSeconds;
+        QVERIFY(stepped > 0.0);
+        window->panel()->phiSlider()->setValue(30); // an edit, and an undo step
+        QCOMPARE(settledStatus(*window).stepSeconds, stepped);
+        window->undoStack()->undo();
+        QCOMPARE(settledStatus(*window).stepSeconds, stepped);
+        window->simulation()->stepOnce();
+        QVERIFY(settledStatus(*window).stepSeconds != stepped); // the new step's own
     }
 
     void aRecordedEditorSessionReplaysToTheSameState() {

@@ -246,6 +246,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         statusBar()->clearMessage();
         gateUndo();
     });
+    connect(input_, &ViewportInput::holdChanged, this, &MainWindow::gateUndo);
     // An undo or redo lets go of a held grab (EditSession); the hand follows.
     connect(sim_.get(), &SimulationThread::strokeUndone, input_, &ViewportInput::letGo);
     connect(sim_.get(), &SimulationThread::strokeRedone, input_, &ViewportInput::letGo);
@@ -647,10 +648,14 @@ void MainWindow::setFoldUnderWay(bool folding) {
 
 void MainWindow::gateUndo() {
     // While a fold is carried round, the sheet is the fold's: the session refuses undo
-    // and redo, so the history must not move either.
-    undoView_->setEnabled(!foldUnderWay_);
-    action("undo")->setEnabled(!foldUnderWay_ && undo_->canUndo());
-    action("redo")->setEnabled(!foldUnderWay_ && undo_->canRedo());
+    // and redo, so the history must not move either. While the mouse holds the paper
+    // (Push or Grab), the step it makes is not in the history yet: Ctrl+Z then undid
+    // the step before it and took the held push's breaks with it, and a redo the
+    // session refused still moved the history.
+    const bool busy = foldUnderWay_ || input_->toolPressed();
+    undoView_->setEnabled(!busy);
+    action("undo")->setEnabled(!busy && undo_->canUndo());
+    action("redo")->setEnabled(!busy && undo_->canRedo());
 }
 
 QString MainWindow::foldAnswerText(FoldRefusal refusal) {

@@ -26,6 +26,7 @@ void ViewportInput::setToolRadius(double radius) {
 
 void ViewportInput::setTool(Tool tool) {
     if (tool == tool_) return;
+    const bool wasHolding = toolPressed();
     if (grabbing_) useGrab(grabPixel_, false, false); // let go of what is held
     foldDrawing_ = false;
     viewport_->setFoldLine({});
@@ -43,6 +44,11 @@ void ViewportInput::setTool(Tool tool) {
         viewport_->setCursor(Qt::CrossCursor);
         break;
     }
+    sayIfHoldChanged(wasHolding);
+}
+
+void ViewportInput::sayIfHoldChanged(bool wasHolding) {
+    if (toolPressed() != wasHolding) emit holdChanged(toolPressed());
 }
 
 OrbitCamera::Ray ViewportInput::rayAt(const QPoint& pixel) const {
@@ -94,8 +100,10 @@ void ViewportInput::pointTool(const QPoint& pixel, bool pressed) {
 
 void ViewportInput::letGo() {
     if (!grabbing_) return;
+    const bool wasHolding = toolPressed();
     grabbing_ = false;
     viewport_->setCursor(Qt::OpenHandCursor);
+    sayIfHoldChanged(wasHolding);
 }
 
 void ViewportInput::useGrab(const QPoint& pixel, bool held, bool press) {
@@ -233,6 +241,13 @@ bool ViewportInput::orbitPanOrZoom(QEvent* event) {
 
 bool ViewportInput::eventFilter(QObject* watched, QEvent* event) {
     if (watched != viewport_) return false;
+    const bool wasHolding = toolPressed();
+    const bool handled = handle(event);
+    sayIfHoldChanged(wasHolding);
+    return handled;
+}
+
+bool ViewportInput::handle(QEvent* event) {
     if (event->type() == QEvent::MouseButtonPress || event->type() == QEvent::Wheel) emit acted();
     switch (event->type()) {
     case QEvent::MouseButtonPress:

@@ -69,11 +69,17 @@ class ViewportInput : public QObject {
     // A fold line was drawn from `from` (on the paper or the desk) to `to` (in the plane
     // facing the way the paper or desk did there).
     void foldDrawn(const pf::Vec3& from, const pf::Vec3& to);
+    // The left button took hold of the paper with Push or Grab, or let it go
+    // (toolPressed changed).
+    void holdChanged(bool holding);
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
+    // Mouse, wheel and keys, before holdChanged is worked out.
+    bool handle(QEvent* event);
+    void sayIfHoldChanged(bool wasHolding);
     void pointTool(const QPoint& pixel, bool pressed);
     // Grab and Pin: the left button at `pixel` (pressed, moved with it held, released).
     void useGrab(const QPoint& pixel, bool held, bool press);
