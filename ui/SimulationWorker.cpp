@@ -29,12 +29,12 @@ void SimulationWorker::runCommands() {
 
 void SimulationWorker::start() {
     timer_.start(kTickMilliseconds);
-    publish(0.0);
+    publish();
 }
 
 void SimulationWorker::setPlaying(bool playing) {
     playing_ = playing;
-    publish(0.0);
+    publish();
 }
 
 void SimulationWorker::stepOnce() {
@@ -42,22 +42,23 @@ void SimulationWorker::stepOnce() {
     QElapsedTimer t;
     t.start();
     advance(1);
-    publish(t.nsecsElapsed() * 1e-9);
+    lastStepSeconds_ = t.nsecsElapsed() * 1e-9;
+    publish();
 }
 
 void SimulationWorker::setThreads(int threads) {
     session_.simulation().setThreads(threads);
-    publish(0.0);
+    publish();
 }
 
 void SimulationWorker::setParams(const SimParams& params) {
     session_.setParams(params);
-    publish(0.0);
+    publish();
 }
 
 void SimulationWorker::replaceWorld(const World& world) {
     session_.replaceWorld(world);
-    publish(0.0);
+    publish();
     emit worldReplaced();
 }
 
@@ -69,7 +70,7 @@ void SimulationWorker::setTool(const Vec3& target, double radius, bool visible, 
     // cursor (where it is put at once), goes or is pressed is shown now.
     const SphereTool& after = session_.world().sphere;
     if (!playing_ && (after.hovering != before.hovering || after.active != before.active))
-        publish(0.0);
+        publish();
 }
 
 void SimulationWorker::grab(const Vec3& target, bool held, bool begin) {
@@ -81,21 +82,21 @@ void SimulationWorker::pin(const Vec3& point, double radius) {
     editedSinceShown_ = true;
     const auto ended = session_.pin(point, radius);
     announce(ended);
-    if (ended) publish(0.0); // the pins show while paused too
+    if (ended) publish(); // the pins show while paused too
 }
 
 void SimulationWorker::fold(const FoldRequest& request) {
     editedSinceShown_ = true;
     const FoldRefusal refusal = session_.fold(request);
     emit foldAnswered(static_cast<int>(refusal));
-    if (refusal == FoldRefusal::None) publish(0.0); // the flap shows pinned while paused
+    if (refusal == FoldRefusal::None) publish(); // the flap shows pinned while paused
 }
 
 void SimulationWorker::reset(const World& world) {
     editedSinceShown_ = true;
     const auto ended = session_.reset(world);
     announce(ended);
-    if (ended) publish(0.0); // the fresh sheet shows while paused too
+    if (ended) publish(); // the fresh sheet shows while paused too
 }
 
 void SimulationWorker::announce(const std::optional<EditSession::StrokeEnd>& ended) {
@@ -107,7 +108,7 @@ void SimulationWorker::undoStroke(int stroke) {
     const auto recovered = session_.undoStroke(stroke);
     if (!recovered) return;
     emit strokeUndone(stroke, *recovered);
-    publish(0.0);
+    publish();
 }
 
 void SimulationWorker::redoStroke(int stroke) {
@@ -116,7 +117,7 @@ void SimulationWorker::redoStroke(int stroke) {
     if (reapplied) emit strokeRedone(stroke, *reapplied);
     // Refused, it may still have taken back the damage since the last undo or redo (the
     // session's redoStroke): shown, also while paused.
-    publish(0.0);
+    publish();
 }
 
 void SimulationWorker::settle() {
@@ -148,7 +149,7 @@ void SimulationWorker::frame() {
     if (!playing_) {
         sinceTick_.invalidate();
         pacer_.restart();
-        if (session_.placeToolAtTarget()) publish(0.0);
+        if (session_.placeToolAtTarget()) publish();
         return;
     }
     const double elapsed = sinceTick_.isValid() ? sinceTick_.nsecsElapsed() * 1e-9 : kFrameSeconds;
@@ -163,13 +164,14 @@ void SimulationWorker::frame() {
     // Averaged over the last few ticks, so that one slow tick (a break's new mesh, the
     // view taking the core) does not stop the catching up.
     stepCost_ = stepCost_ > 0.0 ? 0.8 * stepCost_ + 0.2 * cost : cost;
+    lastStepSeconds_ = cost;
     // A sleeping sheet is the picture already shown: making, hashing and comparing a
     // new one each frame kept 42 % of a core busy at 14,100 vertices (83,160 springs)
     // with nothing to show, and the view 11 % comparing it with the last.
     if (wasAsleep && shownStillShows())
-        republish(cost);
+        republish();
     else
-        publish(cost);
+        publish();
 }
 
 bool SimulationWorker::shownStillShows() const {
@@ -194,9 +196,9 @@ bool SimulationWorker::shownStillShows() const {
     return pinned == s.pinned && held == s.held;
 }
 
-void SimulationWorker::setClock(SimulationStatus& st, double stepSeconds) const {
+void SimulationWorker::setClock(SimulationStatus& st) const {
     st.step = session_.world().stepCount;
-    st.stepSeconds = stepSeconds;
+    st.stepSeconds = lastStepSeconds_;
     st.threads = session_.simulation().threads();
     st.playing = playing_;
     st.pace = pacer_.pace();
@@ -204,16 +206,16 @@ void SimulationWorker::setClock(SimulationStatus& st, double stepSeconds) const 
     st.asleep = session_.simulation().asleep();
 }
 
-void SimulationWorker::republish(double stepSeconds) {
+void SimulationWorker::republish() {
     SimulationStatus st = shownStatus_;
-    setClock(st, stepSeconds);
+    setClock(st);
     emit published(shown_, st);
 }
 
-void SimulationWorker::publish(double stepSeconds) {
+void SimulationWorker::publish() {
     const World& w = session_.world();
     SimulationStatus st;
-    setClock(st, stepSeconds);
+    setClock(st);
     st.vertices = w.sheet.verts.size();
     st.springs = w.sheet.springs.size();
     const SheetStats stats = computeStats(w.sheet);

@@ -65,16 +65,16 @@ class SimulationWorker : public QObject {
   private:
     void frame();
     void advance(int steps);
-    void publish(double stepSeconds);
+    void publish();
     // Whether the snapshot last published still shows the sheet: it sleeps, no edit has
     // come since, and nothing a sleeping step can change on its own (the tool, the pins, a
     // hand's grip, the positions) has changed.
     bool shownStillShows() const;
-    // The status's clock: the step, its cost, and what the worker and the session are
-    // doing (playing, pace, folding, asleep).
-    void setClock(SimulationStatus& status, double stepSeconds) const;
+    // The status's clock: the step, the last step's cost, and what the worker and the
+    // session are doing (playing, pace, folding, asleep).
+    void setClock(SimulationStatus& status) const;
     // Publishes the snapshot shown again, with the status's clock brought up to date.
-    void republish(double stepSeconds);
+    void republish();
     void announce(const std::optional<EditSession::StrokeEnd>& ended);
 
     EditSession session_;
@@ -83,6 +83,9 @@ class SimulationWorker : public QObject {
     FramePacer pacer_;
     QElapsedTimer sinceTick_; // reset by a tick while paused: the first tick of play is a frame
     double stepCost_ = 0.0;   // wall seconds a step has taken lately (FramePacer)
+    // What the last step took. An edit's status shows it too: every edit read "step 0 µs"
+    // until the next frame's steps (a user saw "step 0 µs · 0.11× real time" after an undo).
+    double lastStepSeconds_ = 0.0;
     bool playing_ = true;
     // The last snapshot and status published, the velocities they were made from, and
     // whether an edit has come since (an edit may change what no comparison covers; a
