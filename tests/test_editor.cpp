@@ -1806,20 +1806,31 @@ class TestEditor : public QObject {
     }
 
     // Simulation > Settle: the sheet comes to rest without new breaks, then stays exactly
-    // as it is; it is one undo step, which gives the moving sheet back.
+    // as it is; it is one undo step, which gives the moving sheet back. Undo waits until
+    // the sheet has settled.
     void settleKeepsTheSheetAndIsOneUndoStep() {
         window->newScene(QStringLiteral("drop")); // a tilted sheet in the air: it moves
         inJacobiWhenSanitized();
         QueuedSignalSpy settled(window->simulation(), &SimulationThread::settled);
+        window->panel()->psiSlider()->setValue(60); // a step before the Settle
         const int before = settledStatus(*window).breaks;
         const auto chosenAt = worldOf(*window);
+        QVERIFY(window->action("undo")->isEnabled());
         window->action("settle")->trigger();
+        // While it settles, the Settle is not a step yet: Undo and Redo wait (Ctrl+Z undid
+        // the step before it), until it freezes.
+        QVERIFY(!window->action("undo")->isEnabled());
+        for (int k = 0; k < 24; ++k) window->simulation()->stepOnce();
+        settledStatus(*window);
+        QCoreApplication::processEvents();
+        QVERIFY(!window->action("undo")->isEnabled());
         const int steps = int(std::lround(EditSession::kSettleSeconds * 240)) + 10;
         for (int k = 0; k < steps; ++k) window->simulation()->stepOnce();
         // Every step applied first: under a sanitizer they take longer than the wait.
         window->simulation()->sync();
         QVERIFY(waitForCount(settled, 1));
-        QTRY_COMPARE(window->undoStack()->count(), 1);
+        QTRY_COMPARE(window->undoStack()->count(), 2);
+        QTRY_VERIFY(window->action("undo")->isEnabled());
         QCOMPARE(window->undoStack()->undoText(), QStringLiteral("Settle"));
         QCOMPARE(settledStatus(*window).breaks, before);
         const auto kept = worldOf(*window);

@@ -237,7 +237,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     connect(sim_.get(), &SimulationThread::foldAnswered, this, [this](int refusal) {
         statusBar()->showMessage(foldAnswerText(static_cast<FoldRefusal>(refusal)), 8000);
-        if (refusal == int(FoldRefusal::None)) setFoldUnderWay(true);
+        if (refusal == int(FoldRefusal::None)) setEditUnderWay(true, settleUnderWay_);
     });
     // The stack enables its own actions whenever it moves (a parameter change, say). A
     // message about what came before is over too (a fold's refusal stood for 8 s after
@@ -386,6 +386,7 @@ void MainWindow::createActions() {
             return;
         }
         sim_->settle();
+        setEditUnderWay(foldUnderWay_, true); // at once, not a frame later
         statusBar()->showMessage(playing_ ? tr("Settling: the sheet comes to rest…")
                                           : tr("Settling once the simulation plays (Space)."));
     });
@@ -629,7 +630,7 @@ void MainWindow::onSnapshot() {
     else if (!readoutLater_->isActive())
         // The last snapshot before a pause or a quiet spell is shown too, a little later.
         readoutLater_->start(std::max(0, kReadoutMs - int(readoutClock_.elapsed())));
-    setFoldUnderWay(st.folding);
+    setEditUnderWay(st.folding, st.settling);
     updateTitle();
 }
 
@@ -641,8 +642,9 @@ void MainWindow::showReadouts(const SimulationStatus& st) {
     readoutClock_.start();
 }
 
-void MainWindow::setFoldUnderWay(bool folding) {
+void MainWindow::setEditUnderWay(bool folding, bool settling) {
     foldUnderWay_ = folding;
+    settleUnderWay_ = settling;
     gateUndo();
 }
 
@@ -651,8 +653,10 @@ void MainWindow::gateUndo() {
     // and redo, so the history must not move either. While the mouse holds the paper
     // (Push or Grab), the step it makes is not in the history yet: Ctrl+Z then undid
     // the step before it and took the held push's breaks with it, and a redo the
-    // session refused still moved the history.
-    const bool busy = foldUnderWay_ || input_->toolPressed();
+    // session refused still moved the history. A Settle becomes a step once the sheet
+    // freezes (at most EditSession::kSettleSeconds of the sheet's time): Ctrl+Z while it
+    // settled undid the step before it, where a user meant the Settle.
+    const bool busy = foldUnderWay_ || settleUnderWay_ || input_->toolPressed();
     undoView_->setEnabled(!busy);
     action("undo")->setEnabled(!busy && undo_->canUndo());
     action("redo")->setEnabled(!busy && undo_->canRedo());

@@ -135,7 +135,8 @@ class MainWindow : public QMainWindow {
 
     QString scene_ = QStringLiteral("press");
     bool foldUnderWay_ = false;
-    void setFoldUnderWay(bool folding);
+    bool settleUnderWay_ = false;
+    void setEditUnderWay(bool folding, bool settling);
     void showReadouts(const SimulationStatus& st);
     // Undo, Redo and the history enabled as the stack allows, unless a fold is under way.
     void gateUndo();

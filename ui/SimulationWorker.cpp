@@ -203,6 +203,7 @@ void SimulationWorker::setClock(SimulationStatus& st) const {
     st.playing = playing_;
     st.pace = pacer_.pace();
     st.folding = session_.folding();
+    st.settling = session_.settling();
     st.asleep = session_.simulation().asleep();
 }
 
