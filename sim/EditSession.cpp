@@ -422,6 +422,14 @@ bool EditSession::redoWaiting() const {
 }
 
 void EditSession::keepSettlingWithLastStroke(bool forALaterRedo) {
+    // A Reset's step is the world it put in place; what that sheet did since (breaks
+    // included: crumple-cycles' pins gather it at once) is that world now. Its redo gives
+    // it back, so the next step is redone on the mesh it began on.
+    if (Stroke* newest = newestApplied();
+        newest && newest->worldAfter && newest->sheetAfter == sheet_) {
+        if (!forALaterRedo) newest->worldAfter = std::make_shared<const World>(sim_.world());
+        return;
+    }
     keepSettlingWithLastStroke(static_cast<Index>(sim_.world().sheet.events.size()), look(),
                                forALaterRedo);
 }
@@ -525,6 +533,8 @@ std::optional<int> EditSession::undoStroke(int stroke) {
     const Stroke& st = strokes_[static_cast<std::size_t>(stroke)];
     if (st.worldAfter) { // a Reset
         if (sheet_ != st.sheetAfter || pressed_) return std::nullopt;
+        // As the newest step, its redo gives back the sheet as it is now (as a stroke's).
+        if (newestApplied() == &st && !redoWaiting()) keepSettlingWithLastStroke();
         swapSheet(*st.worldBefore, st.sheetBefore);
         if (st.frozenBefore) freeze();
         strokes_[static_cast<std::size_t>(stroke)].applied = false;

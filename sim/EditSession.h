@@ -126,7 +126,8 @@ class EditSession {
 
     // Reset: the sheet starts again from `world` (the scene as New makes it) as an undo
     // step, unlike New and Open: undo gives back the sheet as it was, with the strokes
-    // made on it, and redo the fresh sheet. The clock runs on (commands stay in step
+    // made on it, and redo the fresh sheet as the next step found it (or as it was when
+    // the Reset was undone, if no step came after it). The clock runs on (commands stay in step
     // order) and the tool stays where it is. A grab is let go; refused while the push
     // tool is pressed.
     std::optional<StrokeEnd> reset(const World& world);
@@ -246,8 +247,8 @@ class EditSession {
         // The sheet it was made on (sheet_): its edge and vertex ids mean nothing on
         // another, so undo and redo need that sheet.
         int sheet = 0;
-        // A Reset: the whole sheet before it (as the last do left it) and after it, and
-        // which sheet each is.
+        // A Reset: the whole sheet before it (as the last do left it) and after it (as
+        // the next edit found it, keepSettlingWithLastStroke), and which sheet each is.
         std::shared_ptr<const World> worldBefore, worldAfter;
         int sheetBefore = 0, sheetAfter = 0;
     };

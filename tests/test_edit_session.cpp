@@ -503,6 +503,66 @@ class TestEditSession : public QObject {
         }
     }
 
+    // The fresh sheet of a Reset may break before the first step made on it (a Reset to
+    // `crumple-cycles`, whose pins gather the sheet at once). That damage is the Reset's:
+    // its redo gives back the sheet the next step began on, so that step is redone too,
+    // and a Reset undone as the newest step is redone as it was when undone.
+    void aResetIsRedoneWithWhatItsSheetBrokeBeforeTheNextStep() {
+        EditSession session(test::jacobiScene("press"));
+        QVERIFY(pushStroke(session, 0.0, 0.5));
+        const auto reset = session.reset(test::jacobiScene("press"));
+        QVERIFY(reset);
+        QCOMPARE(session.advance(12), StepStatus::Ok);
+        breakAsItSettles(session);
+        const Sheet atUndo = session.world().sheet;
+        QVERIFY(session.undoStroke(reset->stroke));
+        QVERIFY(session.redoStroke(reset->stroke));
+        QCOMPARE(topology(session.world().sheet), topology(atUndo));
+        QVERIFY(session.world().sheet.verts.x == atUndo.verts.x);
+
+        breakAsItSettles(session); // and again, before the first step on it
+        const auto pushes = pushTwice(session);
+        QVERIFY(pushes);
+        const auto& [first, second] = *pushes;
+        QCOMPARE(session.advance(20), StepStatus::Ok);
+        const Sheet atSecondUndo = session.world().sheet;
+        QVERIFY(session.undoStroke(second.stroke));
+        QVERIFY(session.undoStroke(first.stroke));
+        const Sheet atResetUndo = session.world().sheet;
+        QVERIFY(session.undoStroke(reset->stroke));
+        QVERIFY(session.redoStroke(reset->stroke));
+        QCOMPARE(topology(session.world().sheet), topology(atResetUndo));
+        QVERIFY(session.redoStroke(first.stroke));
+        QVERIFY2(session.redoStroke(second.stroke), "the second push's redo was refused");
+        QCOMPARE(topology(session.world().sheet), topology(atSecondUndo));
+        QVERIFY(session.world().sheet.verts.x == atSecondUndo.verts.x);
+    }
+
+    // The same with the sheet the user's was: a Reset to `crumple-cycles`, whose pins
+    // gather the fresh sheet and break it before the first stroke on it.
+    void strokesOnAGatheredCrumpleCyclesSheetAreRedoneAfterItsResetIsUndoneAndRedone() {
+        EditSession session(test::jacobiScene("press"));
+        const auto reset = session.reset(test::jacobiScene("crumple-cycles"));
+        QVERIFY(reset);
+        const Index fresh = topology(session.world().sheet).activeEvents;
+        QCOMPARE(session.advance(240), StepStatus::Ok);
+        const Index gathered = topology(session.world().sheet).activeEvents;
+        qInfo("the gather broke or hinged %d edges before the first stroke", int(gathered - fresh));
+        QVERIFY(gathered > fresh);
+        const auto pushes = pushTwice(session);
+        QVERIFY(pushes);
+        const auto& [first, second] = *pushes;
+        const Sheet atSecondUndo = session.world().sheet;
+        QVERIFY(session.undoStroke(second.stroke));
+        QVERIFY(session.undoStroke(first.stroke));
+        QVERIFY(session.undoStroke(reset->stroke));
+        QVERIFY(session.redoStroke(reset->stroke));
+        QVERIFY2(session.redoStroke(first.stroke), "the first push's redo was refused");
+        QVERIFY2(session.redoStroke(second.stroke), "the second push's redo was refused");
+        QCOMPARE(topology(session.world().sheet), topology(atSecondUndo));
+        QVERIFY(session.world().sheet.verts.x == atSecondUndo.verts.x);
+    }
+
     // A redo while a push that broke the sheet is held is refused before it takes back
     // anything: the push's breaks would go with the damage since the undo.
     void aRedoWhileABreakingPushIsHeldIsRefused() {
