@@ -7,6 +7,7 @@
 #include "PngFile.h"
 #include "RecordingFile.h"
 #include "SheetFile.h"
+#include "SheetStats.h"
 #include "StatsJson.h"
 
 #include <QElapsedTimer>
@@ -123,6 +124,15 @@ int runReplay(const QStringList& arguments) {
     stats[QStringLiteral("commands")] = static_cast<qint64>(log.commands.size());
     stats[QStringLiteral("complete")] = failure.empty();
     stats[QStringLiteral("threads")] = session.simulation().threads();
+    // A complete replay that ends elsewhere than the recording says: made by another
+    // version of PaperFold (its undo and redo changed, say), it replays as this one does.
+    const QString recorded = log.endState
+                                 ? QStringLiteral("%1").arg(*log.endState, 16, 16, QLatin1Char('0'))
+                                 : QString();
+    const bool elsewhere =
+        failure.empty() && log.endState && stateHash(session.world().sheet) != *log.endState;
+    if (log.endState) stats[QStringLiteral("recorded_state_hash")] = recorded;
+    if (failure.empty() && log.endState) stats[QStringLiteral("matches_recording")] = !elsewhere;
     if (parser.isSet(QStringLiteral("stats")))
         QTextStream(stdout) << QJsonDocument(stats).toJson(QJsonDocument::Compact) << '\n';
     else
@@ -133,6 +143,12 @@ int runReplay(const QStringList& arguments) {
                                    .arg(steps)
                                    .arg(stats[QStringLiteral("breaks")].toInt())
                                    .arg(stats[QStringLiteral("state_hash")].toString());
+    if (elsewhere)
+        err << "paperfold: warning: the replay ended in state "
+            << stats[QStringLiteral("state_hash")].toString() << ", the session it recorded in "
+            << recorded
+            << ": the recording was made by another version of PaperFold, and this one does "
+               "it differently\n";
     if (!failure.empty()) {
         err << "paperfold: the replay stopped: " << QString::fromStdString(failure) << '\n';
         return 3;

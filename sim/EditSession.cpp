@@ -5,6 +5,7 @@
 #include "Integrator.h"
 #include "Normals.h"
 #include "Scenes.h"
+#include "SheetStats.h"
 
 #include <algorithm>
 #include <cmath>
@@ -46,6 +47,7 @@ void EditSession::record(EditCommand command) {
 EditLog EditSession::log() const {
     EditLog out = log_;
     out.endStep = sim_.world().stepCount;
+    out.endState = stateHash(sim_.world().sheet);
     return out;
 }
 

@@ -57,6 +57,11 @@ struct EditLog {
     bool pressed = false;
     std::vector<EditCommand> commands;
     std::int64_t endStep = 0;
+    // stateHash of the sheet at endStep, as the session that recorded it had it. A replay
+    // that ends elsewhere says so: a recording made by another version may replay
+    // differently (its undo and redo, say), and without this it did so silently.
+    // Recordings made before it have none.
+    std::optional<std::uint64_t> endState;
 };
 
 // What a user does to a sheet, applied between steps: the tool follows a target at a

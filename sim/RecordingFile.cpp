@@ -10,6 +10,7 @@
 #include <QCborMap>
 #include <QCborValue>
 #include <QtEndian>
+#include <algorithm>
 #include <cmath>
 
 namespace pf {
@@ -33,7 +34,7 @@ const CborBounds& recordingBounds() {
     static const CborBounds bounds = [] {
         CborBounds b;
         for (const char* key : {"magic", "version", "start", "toolTarget", "pressed", "endStep",
-                                "commands", "params", "worlds", "folds"})
+                                "endState", "commands", "params", "worlds", "folds"})
             b.knownKeys.insert(QLatin1String(key));
         b.maxDepth = 3;
         b.maxValues = kMaxRecordedParams + kMaxRecordedResets + 64;
@@ -58,6 +59,9 @@ QByteArray encodeRecording(const EditLog& log) {
     root[QLatin1String("toolTarget")] = target;
     root[QLatin1String("pressed")] = log.pressed;
     root[QLatin1String("endStep")] = static_cast<qint64>(log.endStep);
+    if (log.endState)
+        root[QLatin1String("endState")] =
+            QStringLiteral("%1").arg(*log.endState, 16, 16, QLatin1Char('0'));
     QByteArray commands;
     commands.reserve(static_cast<qsizetype>(log.commands.size()) * kCommandBytes);
     QCborArray params, worlds;
@@ -127,6 +131,16 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
         end.toInteger() - log.start.stepCount > kMaxRecordedSteps)
         return bad(QStringLiteral("recording.endStep: not a step at or after the start's"));
     log.endStep = end.toInteger();
+    if (const QCborValue state = root.value(QLatin1String("endState")); !state.isUndefined()) {
+        // Hex text, as `state_hash` is printed: 16 lower-case digits.
+        const QString text = state.toString();
+        bool ok = state.isString() && text.size() == 16 && std::ranges::all_of(text, [](QChar ch) {
+                      return (ch >= u'0' && ch <= u'9') || (ch >= u'a' && ch <= u'f');
+                  });
+        const std::uint64_t hash = ok ? text.toULongLong(&ok, 16) : 0;
+        if (!ok) return bad(QStringLiteral("recording.endState: not 16 hexadecimal digits"));
+        log.endState = hash;
+    }
 
     const QCborValue paramsValue = root.value(QLatin1String("params"));
     if (!paramsValue.isArray()) return bad(QStringLiteral("recording.params: missing"));

@@ -1544,6 +1544,32 @@ class TestEditSession : public QObject {
                 c.params = std::make_shared<const SimParams>(p);
             }
         QTest::newRow("φ out of range") << encodeRecording(badParams) << "params";
+        const auto withEndState = [&](const QCborValue& state) {
+            QCborMap root = QCborValue::fromCbor(good).toMap();
+            root[QLatin1String("endState")] = state;
+            return root.toCborValue().toCbor();
+        };
+        QTest::newRow("an end state of 15 digits")
+            << withEndState(QStringLiteral("0123456789abcde")) << "endState";
+        QTest::newRow("an end state that is no number")
+            << withEndState(QStringLiteral("0123456789abcdeg")) << "endState";
+        QTest::newRow("an end state as an integer") << withEndState(QCborValue(42)) << "endState";
+    }
+
+    // The state the session ended in goes with it, and comes back as written.
+    void aRecordingKeepsTheStateItEndedIn() {
+        EditSession session(test::machineryScene("press"));
+        scriptedSession(session);
+        const EditLog log = session.log();
+        QCOMPARE(log.endState, std::optional(stateHash(session.world().sheet)));
+        const RecordingLoad load = decodeRecording(encodeRecording(log));
+        QVERIFY2(load.log, qPrintable(load.error));
+        QCOMPARE(load.log->endState, log.endState);
+        EditLog older = log;
+        older.endState.reset();
+        const RecordingLoad olderLoad = decodeRecording(encodeRecording(older));
+        QVERIFY2(olderLoad.log, qPrintable(olderLoad.error));
+        QVERIFY(!olderLoad.log->endState);
     }
 
     void badRecordingsAreRefusedWithOneLine() {

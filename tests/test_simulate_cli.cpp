@@ -607,6 +607,34 @@ class TestSimulateCli : public QObject {
         QCOMPARE(o[QStringLiteral("complete")].toBool(), true);
         QCOMPARE(o[QStringLiteral("steps")].toInt(), int(session.world().stepCount));
         QVERIFY(QFileInfo::exists(sheet));
+        // The recording carries the state it ended in; this replay ends there, and says
+        // nothing more.
+        QCOMPARE(o[QStringLiteral("recorded_state_hash")].toString(), expected);
+        QCOMPARE(o[QStringLiteral("matches_recording")].toBool(), true);
+        QVERIFY2(r.err.isEmpty(), r.err.constData());
+
+        // A recording whose session ended elsewhere (as one made by another version of
+        // PaperFold that undoes differently): the replay runs as this version does, and
+        // says it ended elsewhere.
+        pf::EditLog other = session.log();
+        other.endState = *other.endState ^ 1;
+        const QString otherRec = dir.filePath(QStringLiteral("other.paperrec"));
+        QVERIFY2(pf::saveRecording(other, otherRec, &error), qPrintable(error));
+        const Result elsewhere = runPaperfold({"replay", otherRec, "--stats"});
+        QCOMPARE(elsewhere.exitCode, 0);
+        const QJsonObject e = QJsonDocument::fromJson(elsewhere.out).object();
+        QCOMPARE(e[QStringLiteral("state_hash")].toString(), expected);
+        QCOMPARE(e[QStringLiteral("matches_recording")].toBool(), false);
+        QCOMPARE(elsewhere.err.count('\n'), 1);
+        QVERIFY2(elsewhere.err.contains("another version of PaperFold"), elsewhere.err.constData());
+        // One made before recordings carried it: nothing to compare, nothing said.
+        other.endState.reset();
+        QVERIFY2(pf::saveRecording(other, otherRec, &error), qPrintable(error));
+        const Result older = runPaperfold({"replay", otherRec, "--stats"});
+        QCOMPARE(older.exitCode, 0);
+        QVERIFY(!QJsonDocument::fromJson(older.out).object().contains(
+            QStringLiteral("matches_recording")));
+        QVERIFY2(older.err.isEmpty(), older.err.constData());
 
         // The same session as an image sequence: the start, then every 10 steps.
         const QString pattern = dir.filePath(QStringLiteral("f_%03d.png"));
