@@ -135,6 +135,7 @@ void EditSession::replaceWorld(const World& world) {
     sim_.world().sphere.hovering = tool.hovering;
     grabbed_ = kNone; // a vertex of the old sheet (the new Simulation holds none)
     strokes_.clear();
+    recounted_.clear();
     sheet_ = 0;
     // A stroke held across New goes on from the new sheet.
     if (pressed_) beginStroke();
@@ -356,8 +357,16 @@ EditSession::MeshSize EditSession::meshSize() const {
     return {s.verts.size(), s.springs.size(), s.triangleCount()};
 }
 
+void EditSession::noteWhatAResetSees() {
+    resetSeenAt_.reset();
+    const Stroke* newest = newestApplied();
+    if (newest && newest->worldAfter && newest->sheetAfter == sheet_ && redoWaiting())
+        resetSeenAt_ = std::make_shared<const World>(sim_.world());
+}
+
 void EditSession::beginStroke() {
     forgetFoldWatch(); // the next edit came first
+    noteWhatAResetSees();
     // While a redo waits, the damage since the undo is no stroke's yet: an edit that ends
     // as an undo step gives it to the stroke before it then (keepStroke), and one that
     // does not (a press that moved nothing) leaves it for the redo to take back.
@@ -411,6 +420,24 @@ void EditSession::appendEvents(Stroke& stroke, Index from, Index to) const {
     }
 }
 
+void EditSession::noteRecount(const Stroke& stroke) {
+    // A pin's step is named by its vertices, a Settle and a Reset by nothing counted.
+    if (stroke.kind != StrokeKind::Push && stroke.kind != StrokeKind::Grab &&
+        stroke.kind != StrokeKind::Fold)
+        return;
+    const int index = static_cast<int>(&stroke - strokes_.data());
+    const int events = static_cast<int>(stroke.events.size());
+    auto same = std::ranges::find(recounted_, index, &StrokeEnd::stroke);
+    if (same != recounted_.end())
+        same->events = events;
+    else
+        recounted_.push_back({index, events, stroke.kind});
+}
+
+std::vector<EditSession::StrokeEnd> EditSession::takeRecounted() {
+    return std::exchange(recounted_, {});
+}
+
 EditSession::Stroke* EditSession::newestApplied() {
     auto done = std::find_if(strokes_.rbegin(), strokes_.rend(),
                              [](const Stroke& st) { return st.applied; });
@@ -447,7 +474,9 @@ void EditSession::keepSettlingWithLastStroke(Index until, SheetLook then, bool f
         last.sinceLaterUndo = last.events.size();
     // The damage even of a step too old to keep its look (kStrokesWithLook): the next
     // step began on the mesh with it.
+    const std::size_t had = last.events.size();
     appendEvents(last, last.endEvent, until);
+    if (last.events.size() != had) noteRecount(last);
     last.endEvent = until;
     if (!last.after.x.empty()) last.after = std::move(then);
 }
@@ -455,9 +484,15 @@ void EditSession::keepSettlingWithLastStroke(Index until, SheetLook then, bool f
 EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke, StrokeKind kind) {
     // The step drops the redos that waited (the editor's History does): the damage since
     // their undo is the stroke's before it now, up to where this one began.
-    if (redoWaiting() && !stroke.worldAfter)
-        keepSettlingWithLastStroke(stroke.firstEvent, stroke.before);
+    if (redoWaiting() && !stroke.worldAfter) {
+        if (Stroke* newest = newestApplied(); newest && newest->worldAfter && resetSeenAt_)
+            newest->worldAfter = resetSeenAt_;
+        else
+            keepSettlingWithLastStroke(stroke.firstEvent, stroke.before);
+    }
+    resetSeenAt_.reset();
     stroke.sheet = sheet_;
+    stroke.kind = kind;
     stroke.endEvent = static_cast<Index>(sim_.world().sheet.events.size());
     stroke.applied = true;
     settledSince_ = kNone;
@@ -585,6 +620,9 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         reset.frozenBefore = settle_ == Settle::Frozen;
         swapSheet(*reset.worldAfter, reset.sheetAfter);
         reset.applied = true;
+        // What its sheet breaks from now on (crumple-cycles' pins go on gathering it) is
+        // taken back by the next step's redo, which needs the mesh that step began on.
+        settledSince_ = static_cast<Index>(sim_.world().sheet.events.size());
         return 0;
     }
     if (strokes_[static_cast<std::size_t>(stroke)].sheet != sheet_) return std::nullopt;
@@ -607,8 +645,10 @@ std::optional<int> EditSession::redoStroke(int stroke) {
         // What the step below took of it while this one waited is gone now: done again,
         // that step must not bring it back.
         if (Stroke* below = newestApplied(); below && below->sinceLaterUndo) {
+            const std::size_t had = below->events.size();
             below->events.resize(*below->sinceLaterUndo);
             below->sinceLaterUndo.reset();
+            if (below->events.size() != had) noteRecount(*below);
         }
     }
     // Edge ids are the stroke's only on the mesh it began on: anything else (another
@@ -694,6 +734,7 @@ void EditSession::settle() {
     if (settle_ != Settle::None || busy()) return;
     forgetFoldWatch(); // frozen, the flap would be read only when something thaws it
     if (!redoWaiting()) keepSettlingWithLastStroke();
+    noteWhatAResetSees();
     setSettle(Settle::Settling);
     settleStart_ = sim_.world().stepCount;
     settleLook_ = look();

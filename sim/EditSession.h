@@ -199,6 +199,11 @@ class EditSession {
     // The undo step of a settle that froze the sheet, or of a fold that was let go, since
     // the last call, once.
     std::optional<StrokeEnd> takeFinished();
+    // The steps whose breaks and hinges changed since the last call, with their new count
+    // (StrokeEnd::events), once each: a push or grab takes what the sheet breaks settling
+    // after it when the next edit begins, and gives back what a later step's redo takes
+    // back. The History named each with its count at the release only.
+    std::vector<StrokeEnd> takeRecounted();
     bool settling() const { return settle_ == Settle::Settling; }
     bool frozen() const { return settle_ == Settle::Frozen; }
 
@@ -244,6 +249,7 @@ class EditSession {
         // undone, while that step waits for its redo: a redo of this step gives it back
         // (the sheet as the user saw it), and the later step's redo takes it back first.
         std::optional<std::size_t> sinceLaterUndo;
+        StrokeKind kind = StrokeKind::Push;
         bool settle = false;       // a Settle: redo freezes the sheet again
         bool frozenBefore = false; // began on a settled sheet: undo freezes it again
         // A pin: these vertices were set to `pinnedTo` (undo sets them back).
@@ -323,6 +329,14 @@ class EditSession {
     std::int64_t settleStart_ = 0;
     SheetLook settleLook_; // the sheet when Settle was chosen
     std::optional<StrokeEnd> finished_;
+    std::vector<StrokeEnd> recounted_;
+    // The world as the edit under way found it, while the newest step done is a Reset and
+    // an undone step waits for its redo: should the edit become a step, the Reset's redo
+    // gives this back (the damage since the undo is then the Reset's; keepStroke).
+    std::shared_ptr<const World> resetSeenAt_;
+    void noteWhatAResetSees();
+    // A step's count of breaks and hinges changed (takeRecounted).
+    void noteRecount(const Stroke& stroke);
     // The damage log's length after the last undo or redo (kNone once an edit began):
     // what lies beyond is the sheet settling since, which a redo takes back first.
     Index settledSince_ = kNone;

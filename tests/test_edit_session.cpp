@@ -503,6 +503,44 @@ class TestEditSession : public QObject {
         }
     }
 
+    // A step's count of breaks and hinges is said again when it changes: a push takes
+    // what the sheet broke settling after it once the next edit begins, keeps apart what
+    // it broke after a later step's undo, and gives that back at the later step's redo.
+    void aStepsBreaksAreCountedAgainWhenItTakesOrGivesBackDamage() {
+        EditSession session(test::jacobiScene("press"));
+        const auto pushes = pushTwice(session);
+        QVERIFY(pushes);
+        const auto& [first, second] = *pushes;
+        const auto recounts = [&] {
+            std::vector<std::pair<int, int>> out;
+            for (const auto& r : session.takeRecounted()) out.emplace_back(r.stroke, r.events);
+            return out;
+        };
+        recounts(); // whatever the two pushes took between them
+        QVERIFY(session.undoStroke(second.stroke));
+        breakAsItSettles(session);
+        QVERIFY(session.undoStroke(first.stroke));
+        const auto kept = recounts();
+        QCOMPARE(kept.size(), std::size_t(1));
+        QCOMPARE(kept[0].first, first.stroke);
+        const int withDamage = kept[0].second;
+        QVERIFY(session.redoStroke(first.stroke));
+        QVERIFY(recounts().empty());
+        QVERIFY(session.redoStroke(second.stroke)); // takes that damage back from the first
+        const auto given = recounts();
+        QCOMPARE(given.size(), std::size_t(1));
+        QCOMPARE(given[0].first, first.stroke);
+        QCOMPARE(given[0].second, withDamage - 1);
+        // Settling damage after the newest push is its own once the next edit begins.
+        breakAsItSettles(session);
+        pushStroke(session, 0.2, 0.3);
+        const auto taken = recounts();
+        QCOMPARE(taken.size(), std::size_t(1));
+        QCOMPARE(taken[0].first, second.stroke);
+        QCOMPARE(taken[0].second, second.events + 1);
+        QVERIFY(recounts().empty()); // once
+    }
+
     // The fresh sheet of a Reset may break before the first step made on it (a Reset to
     // `crumple-cycles`, whose pins gather the sheet at once). That damage is the Reset's:
     // its redo gives back the sheet the next step began on, so that step is redone too,
@@ -539,8 +577,17 @@ class TestEditSession : public QObject {
     }
 
     // The same with the sheet the user's was: a Reset to `crumple-cycles`, whose pins
-    // gather the fresh sheet and break it before the first stroke on it.
+    // gather the fresh sheet and break it before the first stroke on it, and go on
+    // gathering it between the clicks of the undos and redos (a helper's session, playing,
+    // 0.8 s apart: the pushes' redos moved the History and gave nothing back).
+    void strokesOnAGatheredCrumpleCyclesSheetAreRedoneAfterItsResetIsUndoneAndRedone_data() {
+        QTest::addColumn<int>("between");
+        QTest::newRow("paused") << 0;
+        QTest::newRow("playing, 0.8 s between clicks") << 192;
+    }
     void strokesOnAGatheredCrumpleCyclesSheetAreRedoneAfterItsResetIsUndoneAndRedone() {
+        QFETCH(int, between);
+        const auto wait = [&](EditSession& s) { return s.advance(between) == StepStatus::Ok; };
         EditSession session(test::jacobiScene("press"));
         const auto reset = session.reset(test::jacobiScene("crumple-cycles"));
         QVERIFY(reset);
@@ -552,15 +599,58 @@ class TestEditSession : public QObject {
         const auto pushes = pushTwice(session);
         QVERIFY(pushes);
         const auto& [first, second] = *pushes;
+        QVERIFY(wait(session));
         const Sheet atSecondUndo = session.world().sheet;
         QVERIFY(session.undoStroke(second.stroke));
+        QVERIFY(wait(session));
         QVERIFY(session.undoStroke(first.stroke));
+        QVERIFY(wait(session));
         QVERIFY(session.undoStroke(reset->stroke));
+        QVERIFY(wait(session));
         QVERIFY(session.redoStroke(reset->stroke));
+        QVERIFY(wait(session));
         QVERIFY2(session.redoStroke(first.stroke), "the first push's redo was refused");
+        QVERIFY(wait(session));
         QVERIFY2(session.redoStroke(second.stroke), "the second push's redo was refused");
         QCOMPARE(topology(session.world().sheet), topology(atSecondUndo));
         QVERIFY(session.world().sheet.verts.x == atSecondUndo.verts.x);
+
+        // A push made after an undo, on the gathered sheet, while the undone push's redo
+        // waited: redone after the Reset's undo and redo, on the mesh it began on.
+        QVERIFY(session.undoStroke(second.stroke));
+        QVERIFY(wait(session));
+        const auto third = pushStroke(session, 0.6, 1.0);
+        QVERIFY(third && third->events > 0);
+        QVERIFY(wait(session));
+        const Sheet atThirdUndo = session.world().sheet;
+        QVERIFY(session.undoStroke(third->stroke));
+        QVERIFY(session.undoStroke(first.stroke));
+        QVERIFY(session.undoStroke(reset->stroke));
+        QVERIFY(wait(session));
+        QVERIFY(session.redoStroke(reset->stroke));
+        QVERIFY(wait(session));
+        QVERIFY2(session.redoStroke(first.stroke), "the first push's redo was refused");
+        QVERIFY(wait(session));
+        QVERIFY2(session.redoStroke(third->stroke), "the new push's redo was refused");
+        QCOMPARE(topology(session.world().sheet), topology(atThirdUndo));
+        QVERIFY(session.world().sheet.verts.x == atThirdUndo.verts.x);
+
+        // And one made on the Reset's sheet while the first push's redo waited.
+        QVERIFY(session.undoStroke(third->stroke));
+        QVERIFY(session.undoStroke(first.stroke));
+        QVERIFY(wait(session));
+        const auto fourth = pushStroke(session, 0.0, 0.6);
+        QVERIFY(fourth && fourth->events > 0);
+        QVERIFY(wait(session));
+        const Sheet atFourthUndo = session.world().sheet;
+        QVERIFY(session.undoStroke(fourth->stroke));
+        QVERIFY(session.undoStroke(reset->stroke));
+        QVERIFY(wait(session));
+        QVERIFY(session.redoStroke(reset->stroke));
+        QVERIFY(wait(session));
+        QVERIFY2(session.redoStroke(fourth->stroke), "the push after the undo was refused");
+        QCOMPARE(topology(session.world().sheet), topology(atFourthUndo));
+        QVERIFY(session.world().sheet.verts.x == atFourthUndo.verts.x);
     }
 
     // A redo while a push that broke the sheet is held is refused before it takes back

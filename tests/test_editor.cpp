@@ -482,6 +482,34 @@ class TestEditor : public QObject {
         QVERIFY(settledStatus(*window).stepSeconds != stepped); // the new step's own
     }
 
+    // A push is named with what its undo takes back: what it broke, and what the sheet
+    // broke settling after it until the next edit (it read the count at the release).
+    void aPushIsNamedAgainWithWhatItsSheetBrokeSettling() {
+        openInJacobi();
+        QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        QueuedSignalSpy recounted(window->simulation(), &SimulationThread::strokeRecounted);
+        pushAcross(*window);
+        QVERIFY(waitForCount(recorded, 1));
+        const int atRelease = recorded.last().at(1).toInt();
+        const int before = settledStatus(*window).breaks + settledStatus(*window).hinges;
+        for (int k = 0; k < 480; ++k) window->simulation()->stepOnce();
+        const SimulationStatus settled = settledStatus(*window);
+        const int since = settled.breaks + settled.hinges - before;
+        qInfo("the push: %d breaks or hinges at the release, %d more as it settled", atRelease,
+              since);
+        QVERIFY(since > 0);
+        // (The test loads no translation, so the plural reads "break(s)".)
+        QVERIFY2(
+            window->undoStack()->text(0).startsWith(QStringLiteral("Push (%1 ").arg(atRelease)),
+            qPrintable(window->undoStack()->text(0)));
+        pushAcross(*window); // the next edit begins: the damage is the first push's
+        QVERIFY(waitForCount(recounted, 1));
+        QCOMPARE(recounted.last().at(0).toInt(), 0); // the first push
+        QVERIFY2(window->undoStack()->text(0).startsWith(
+                     QStringLiteral("Push (%1 ").arg(atRelease + since)),
+                 qPrintable(window->undoStack()->text(0)));
+    }
+
     void aRecordedEditorSessionReplaysToTheSameState() {
         // Through the real widgets: a slider edit, a push stroke while the simulation
         // plays, an undo, a paused step; File ▸ Save Recording; the replay ends where the

@@ -147,6 +147,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                 if (kind == static_cast<int>(EditSession::StrokeKind::Fold))
                     statusBar()->showMessage(tr("Folded. Edit ▸ Undo unfolds the paper."), 5000);
             });
+    // A push that broke 12 edges was named "Push (12 breaks or hinges)" for good, while
+    // its undo also took what the sheet broke settling after it.
+    connect(sim_.get(), &SimulationThread::strokeRecounted, this, [this](int stroke, int events) {
+        // (The stack hands its steps out const; a step's name is its own to change.)
+        for (int i = undo_->count() - 1; i >= 0; --i) {
+            auto* command =
+                dynamic_cast<StrokeCommand*>(const_cast<QUndoCommand*>(undo_->command(i)));
+            if (!command || command->stroke() != stroke) continue;
+            command->recount(events);
+            undoView_->viewport()->update();
+            return;
+        }
+    });
     // Said once the paper has had its second (EditSession::takeFoldTurnedBack): a third
     // fold along the diagonal of a sheet folded twice sprang back 99° while the status
     // bar said "the crease keeps it".

@@ -43,6 +43,7 @@ void SimulationThread::forwardWorkerSignals() {
             Qt::DirectConnection);
     };
     forward(&SimulationWorker::strokeRecorded, &SimulationThread::strokeRecorded);
+    forward(&SimulationWorker::strokeRecounted, &SimulationThread::strokeRecounted);
     forward(&SimulationWorker::strokeUndone, &SimulationThread::strokeUndone);
     forward(&SimulationWorker::strokeRedone, &SimulationThread::strokeRedone);
     forward(&SimulationWorker::settled, &SimulationThread::settled);

@@ -74,6 +74,9 @@ class SimulationThread : public QObject {
     // it can be undone as one step. `kind` is an EditSession::StrokeKind; `events` the
     // breaks and hinges it made, or the vertices it (un)pinned.
     void strokeRecorded(int stroke, int events, int kind);
+    // A step's breaks and hinges now count `events`: it took what the sheet broke
+    // settling after it, or gave back what a later step's redo took back.
+    void strokeRecounted(int stroke, int events);
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
     void settled(int stroke);

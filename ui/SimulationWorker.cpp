@@ -25,6 +25,7 @@ SimulationWorker::~SimulationWorker() {
 
 void SimulationWorker::runCommands() {
     for (const auto& command : channel_.commands.takeAll()) command(*this);
+    announceRecounts();
 }
 
 void SimulationWorker::start() {
@@ -103,6 +104,11 @@ void SimulationWorker::announce(const std::optional<EditSession::StrokeEnd>& end
     if (ended) emit strokeRecorded(ended->stroke, ended->events, static_cast<int>(ended->kind));
 }
 
+void SimulationWorker::announceRecounts() {
+    for (const EditSession::StrokeEnd& r : session_.takeRecounted())
+        emit strokeRecounted(r.stroke, r.events);
+}
+
 void SimulationWorker::undoStroke(int stroke) {
     editedSinceShown_ = true;
     const auto recovered = session_.undoStroke(stroke);
@@ -133,6 +139,7 @@ void SimulationWorker::advance(int steps) {
         else
             announce(finished); // a fold that was let go
     }
+    announceRecounts();
     if (const auto notice =
             EditSession::foldNotice(session_.takeFoldTurnedBack(), session_.takeFoldLeftBehind())) {
         if (notice->kind == EditSession::FoldNotice::Kind::SprangBack)

@@ -53,6 +53,8 @@ class SimulationWorker : public QObject {
     void published(std::shared_ptr<const pf::SheetSnapshot> snapshot,
                    const pf::SimulationStatus& status);
     void strokeRecorded(int stroke, int events, int kind);
+    // A step's breaks and hinges now count `events` (EditSession::takeRecounted).
+    void strokeRecounted(int stroke, int events);
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
     void settled(int stroke);       // a Settle froze the sheet: an undo step
@@ -76,6 +78,7 @@ class SimulationWorker : public QObject {
     // Publishes the snapshot shown again, with the status's clock brought up to date.
     void republish();
     void announce(const std::optional<EditSession::StrokeEnd>& ended);
+    void announceRecounts();
 
     EditSession session_;
     SimulationChannel& channel_;

@@ -73,6 +73,11 @@ void StrokeCommand::retranslate() {
     }
 }
 
+void StrokeCommand::recount(int events) {
+    events_ = events;
+    retranslate();
+}
+
 void StrokeCommand::undo() {
     sim_->undoStroke(stroke_);
 }

@@ -28,6 +28,9 @@ class StrokeCommand : public EditorCommand {
     void undo() override;
     void redo() override;
     void retranslate() override;
+    int stroke() const { return stroke_; }
+    // Named again with the breaks and hinges it holds now (EditSession::takeRecounted).
+    void recount(int events);
 
   private:
     SimulationThread* sim_;
