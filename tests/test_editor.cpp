@@ -510,6 +510,48 @@ class TestEditor : public QObject {
                  qPrintable(window->undoStack()->text(0)));
     }
 
+    // An undo or redo the session refuses changes nothing, and the History steps back to
+    // what the sheet is: it moved at the click, and a user's showed a push done whose redo
+    // had been refused (his next Undo of it then took back the steps before it).
+    void aRefusedUndoOrRedoStepsTheHistoryBack() {
+        QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        window->action("reset")->trigger();
+        QVERIFY(waitForCount(recorded, 1));
+        QTRY_COMPARE(window->undoStack()->index(), 1);
+        const int reset = recorded.last().at(0).toInt();
+        QueuedSignalSpy undone(window->simulation(), &SimulationThread::strokeUndone);
+        QueuedSignalSpy redone(window->simulation(), &SimulationThread::strokeRedone);
+        QueuedSignalSpy undoRefused(window->simulation(), &SimulationThread::strokeUndoRefused);
+        window->undoStack()->undo();
+        QVERIFY(waitForCount(undone, 1));
+        // As if the session had refused that undo: the History is done again, and the
+        // session is not asked to redo what it never undid.
+        emit window->simulation()->strokeUndoRefused(reset);
+        QCOMPARE(window->undoStack()->index(), 1);
+        QVERIFY(window->statusBar()->currentMessage().startsWith(QStringLiteral("Could not undo")));
+        window->simulation()->sync();
+        QCoreApplication::processEvents();
+        QCOMPARE(redone.count(), 0);
+        // Now the History shows the Reset done and the session has it undone: the next undo
+        // is refused for real (a step not done has nothing to take back), and the History
+        // steps forward again.
+        window->undoStack()->undo();
+        QVERIFY(waitForCount(undoRefused, 2));
+        QTRY_COMPARE(window->undoStack()->index(), 1);
+        window->simulation()->sync();
+        QCoreApplication::processEvents();
+        QCOMPARE(undone.count(), 1);
+        QCOMPARE(redone.count(), 0);
+        // And a refused redo steps the History back without an undo.
+        window->undoStack()->redo(); // nothing to redo: index stays
+        emit window->simulation()->strokeRedoRefused(reset);
+        QCOMPARE(window->undoStack()->index(), 0);
+        QVERIFY(window->statusBar()->currentMessage().startsWith(QStringLiteral("Could not redo")));
+        window->simulation()->sync();
+        QCoreApplication::processEvents();
+        QCOMPARE(undone.count(), 1);
+    }
+
     void aRecordedEditorSessionReplaysToTheSameState() {
         // Through the real widgets: a slider edit, a push stroke while the simulation
         // plays, an undo, a paused step; File ▸ Save Recording; the replay ends where the

@@ -529,6 +529,14 @@
         <translation>Die Bildgröße ist Breite x Höhe, jeweils 16 bis %1 Pixel, etwa 1920x1080.</translation>
     </message>
     <message>
+        <source>Could not undo “%1”: the paper is no longer as this step left it.</source>
+        <translation>„%1“ konnte nicht rückgängig gemacht werden: Das Papier ist nicht mehr so, wie dieser Schritt es hinterlassen hat.</translation>
+    </message>
+    <message>
+        <source>Could not redo “%1”: the paper is no longer as this step found it.</source>
+        <translation>„%1“ konnte nicht wiederholt werden: Das Papier ist nicht mehr so, wie dieser Schritt es vorgefunden hat.</translation>
+    </message>
+    <message>
         <source>Settled: the sheet stays as it is until the next edit.</source>
         <translation>Beruhigt: Das Blatt bleibt bis zur nächsten Bearbeitung, wie es ist.</translation>
     </message>

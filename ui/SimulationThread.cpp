@@ -44,6 +44,8 @@ void SimulationThread::forwardWorkerSignals() {
     };
     forward(&SimulationWorker::strokeRecorded, &SimulationThread::strokeRecorded);
     forward(&SimulationWorker::strokeRecounted, &SimulationThread::strokeRecounted);
+    forward(&SimulationWorker::strokeUndoRefused, &SimulationThread::strokeUndoRefused);
+    forward(&SimulationWorker::strokeRedoRefused, &SimulationThread::strokeRedoRefused);
     forward(&SimulationWorker::strokeUndone, &SimulationThread::strokeUndone);
     forward(&SimulationWorker::strokeRedone, &SimulationThread::strokeRedone);
     forward(&SimulationWorker::settled, &SimulationThread::settled);

@@ -77,6 +77,9 @@ class SimulationThread : public QObject {
     // A step's breaks and hinges now count `events`: it took what the sheet broke
     // settling after it, or gave back what a later step's redo took back.
     void strokeRecounted(int stroke, int events);
+    // The session refused an undo or a redo of `stroke`: the History steps back.
+    void strokeUndoRefused(int stroke);
+    void strokeRedoRefused(int stroke);
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
     void settled(int stroke);

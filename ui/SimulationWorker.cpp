@@ -112,7 +112,10 @@ void SimulationWorker::announceRecounts() {
 void SimulationWorker::undoStroke(int stroke) {
     editedSinceShown_ = true;
     const auto recovered = session_.undoStroke(stroke);
-    if (!recovered) return;
+    if (!recovered) {
+        emit strokeUndoRefused(stroke);
+        return;
+    }
     emit strokeUndone(stroke, *recovered);
     publish();
 }
@@ -120,7 +123,10 @@ void SimulationWorker::undoStroke(int stroke) {
 void SimulationWorker::redoStroke(int stroke) {
     editedSinceShown_ = true;
     const auto reapplied = session_.redoStroke(stroke);
-    if (reapplied) emit strokeRedone(stroke, *reapplied);
+    if (reapplied)
+        emit strokeRedone(stroke, *reapplied);
+    else
+        emit strokeRedoRefused(stroke);
     // Refused, it may still have taken back the damage since the last undo or redo (the
     // session's redoStroke): shown, also while paused.
     publish();

@@ -55,6 +55,10 @@ class SimulationWorker : public QObject {
     void strokeRecorded(int stroke, int events, int kind);
     // A step's breaks and hinges now count `events` (EditSession::takeRecounted).
     void strokeRecounted(int stroke, int events);
+    // The session refused an undo or a redo of `stroke` (EditSession::undoStroke): the
+    // sheet is not as that step left it, or found it.
+    void strokeUndoRefused(int stroke);
+    void strokeRedoRefused(int stroke);
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
     void settled(int stroke);       // a Settle froze the sheet: an undo step

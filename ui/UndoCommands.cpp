@@ -79,6 +79,7 @@ void StrokeCommand::recount(int events) {
 }
 
 void StrokeCommand::undo() {
+    if (std::exchange(redoRefused_, false)) return; // the session never did it again
     sim_->undoStroke(stroke_);
 }
 

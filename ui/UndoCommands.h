@@ -31,11 +31,16 @@ class StrokeCommand : public EditorCommand {
     int stroke() const { return stroke_; }
     // Named again with the breaks and hinges it holds now (EditSession::takeRecounted).
     void recount(int events);
+    // The session refused this step's redo (or undo): the History's next undo (or redo) of
+    // it only moves the History back, and tells the session nothing.
+    void redoWasRefused() { redoRefused_ = true; }
+    void undoWasRefused() { done_ = true; }
 
   private:
     SimulationThread* sim_;
     int stroke_, events_, kind_;
     bool done_ = true;
+    bool redoRefused_ = false;
 };
 
 // A parameter change. Consecutive edits of the same parameter within one slider
