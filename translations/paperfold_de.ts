@@ -529,14 +529,6 @@
         <translation>Die Bildgröße ist Breite x Höhe, jeweils 16 bis %1 Pixel, etwa 1920x1080.</translation>
     </message>
     <message>
-        <source>Could not undo “%1”: the paper is no longer as this step left it.</source>
-        <translation>„%1“ konnte nicht rückgängig gemacht werden: Das Papier ist nicht mehr so, wie dieser Schritt es hinterlassen hat.</translation>
-    </message>
-    <message>
-        <source>Could not redo “%1”: the paper is no longer as this step found it.</source>
-        <translation>„%1“ konnte nicht wiederholt werden: Das Papier ist nicht mehr so, wie dieser Schritt es vorgefunden hat.</translation>
-    </message>
-    <message>
         <source>Settled: the sheet stays as it is until the next edit.</source>
         <translation>Beruhigt: Das Blatt bleibt bis zur nächsten Bearbeitung, wie es ist.</translation>
     </message>
@@ -911,6 +903,17 @@
             <numerusform>%n Scharnier</numerusform>
             <numerusform>%n Scharniere</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>pf::StrokeHistory</name>
+    <message>
+        <source>Could not undo “%1”: the paper is no longer as this step left it.</source>
+        <translation>„%1“ konnte nicht rückgängig gemacht werden: Das Papier ist nicht mehr so, wie dieser Schritt es hinterlassen hat.</translation>
+    </message>
+    <message>
+        <source>Could not redo “%1”: the paper is no longer as this step found it.</source>
+        <translation>„%1“ konnte nicht wiederholt werden: Das Papier ist nicht mehr so, wie dieser Schritt es vorgefunden hat.</translation>
     </message>
 </context>
 <context>

@@ -524,14 +524,6 @@
         <translation>画像サイズは 幅 x 高さ で、それぞれ 16～%1 ピクセルです（例：1920x1080）。</translation>
     </message>
     <message>
-        <source>Could not undo “%1”: the paper is no longer as this step left it.</source>
-        <translation>「%1」を元に戻せませんでした：紙はもうこの操作が終わったときの状態ではありません。</translation>
-    </message>
-    <message>
-        <source>Could not redo “%1”: the paper is no longer as this step found it.</source>
-        <translation>「%1」をやり直せませんでした：紙はもうこの操作が始まったときの状態ではありません。</translation>
-    </message>
-    <message>
         <source>Settled: the sheet stays as it is until the next edit.</source>
         <translation>静止しました：次の編集までシートはこのままです。</translation>
     </message>
@@ -902,6 +894,17 @@
         <translation>
             <numerusform>ヒンジ %n</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>pf::StrokeHistory</name>
+    <message>
+        <source>Could not undo “%1”: the paper is no longer as this step left it.</source>
+        <translation>「%1」を元に戻せませんでした：紙はもうこの操作が終わったときの状態ではありません。</translation>
+    </message>
+    <message>
+        <source>Could not redo “%1”: the paper is no longer as this step found it.</source>
+        <translation>「%1」をやり直せませんでした：紙はもうこの操作が始まったときの状態ではありません。</translation>
     </message>
 </context>
 <context>

@@ -524,14 +524,6 @@
         <translation>이미지 크기는 너비 x 높이이며, 각각 16~%1 픽셀입니다 (예: 1920x1080).</translation>
     </message>
     <message>
-        <source>Could not undo “%1”: the paper is no longer as this step left it.</source>
-        <translation>“%1”을(를) 실행 취소할 수 없습니다: 종이가 더 이상 이 단계가 끝났을 때의 상태가 아닙니다.</translation>
-    </message>
-    <message>
-        <source>Could not redo “%1”: the paper is no longer as this step found it.</source>
-        <translation>“%1”을(를) 다시 실행할 수 없습니다: 종이가 더 이상 이 단계가 시작될 때의 상태가 아닙니다.</translation>
-    </message>
-    <message>
         <source>Settled: the sheet stays as it is until the next edit.</source>
         <translation>안정됨: 다음 편집까지 시트가 그대로 유지됩니다.</translation>
     </message>
@@ -902,6 +894,17 @@
         <translation>
             <numerusform>힌지 %n</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>pf::StrokeHistory</name>
+    <message>
+        <source>Could not undo “%1”: the paper is no longer as this step left it.</source>
+        <translation>“%1”을(를) 실행 취소할 수 없습니다: 종이가 더 이상 이 단계가 끝났을 때의 상태가 아닙니다.</translation>
+    </message>
+    <message>
+        <source>Could not redo “%1”: the paper is no longer as this step found it.</source>
+        <translation>“%1”을(를) 다시 실행할 수 없습니다: 종이가 더 이상 이 단계가 시작될 때의 상태가 아닙니다.</translation>
     </message>
 </context>
 <context>

@@ -20,6 +20,7 @@
 #include "SnapshotExport.h"
 #include "SolverPanel.h"
 #include "StatusReadout.h"
+#include "StrokeHistory.h"
 #include "UndoCommands.h"
 #include "Viewport.h"
 #include "ViewportInput.h"
@@ -147,41 +148,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                 if (kind == static_cast<int>(EditSession::StrokeKind::Fold))
                     statusBar()->showMessage(tr("Folded. Edit ▸ Undo unfolds the paper."), 5000);
             });
-    // A push that broke 12 edges was named "Push (12 breaks or hinges)" for good, while
-    // its undo also took what the sheet broke settling after it.
-    connect(sim_.get(), &SimulationThread::strokeRecounted, this, [this](int stroke, int events) {
-        if (StrokeCommand* step = historyStep(stroke).command) {
-            step->recount(events);
-            undoView_->viewport()->update();
-        }
-    });
-    // A refused undo or redo changed nothing; the History moved at the click, so it steps
-    // back (a user's History showed a push done whose redo had been refused, and his next
-    // Undo of it took back the breaks of the steps before it).
-    connect(sim_.get(), &SimulationThread::strokeUndoRefused, this, [this](int stroke) {
-        const HistoryStep step = historyStep(stroke);
-        if (!step.command) return;
-        if (undo_->index() == step.index) {
-            step.command->undoWasRefused();
-            undo_->redo();
-        }
-        statusBar()->showMessage(
-            tr("Could not undo “%1”: the paper is no longer as this step left it.")
-                .arg(step.command->text()),
-            8000);
-    });
-    connect(sim_.get(), &SimulationThread::strokeRedoRefused, this, [this](int stroke) {
-        const HistoryStep step = historyStep(stroke);
-        if (!step.command) return;
-        if (undo_->index() == step.index + 1) {
-            step.command->redoWasRefused();
-            undo_->undo();
-        }
-        statusBar()->showMessage(
-            tr("Could not redo “%1”: the paper is no longer as this step found it.")
-                .arg(step.command->text()),
-            8000);
-    });
+    auto* history = new StrokeHistory(sim_.get(), undo_, this);
+    connect(history, &StrokeHistory::renamed, undoView_->viewport(), qOverload<>(&QWidget::update));
+    connect(history, &StrokeHistory::said, this,
+            [this](const QString& message) { statusBar()->showMessage(message, 8000); });
     // Said once the paper has had its second (EditSession::takeFoldTurnedBack): a third
     // fold along the diagonal of a sheet folded twice sprang back 99° while the status
     // bar said "the crease keeps it".
@@ -675,15 +645,6 @@ void MainWindow::showReadouts(const SimulationStatus& st) {
     solver_->showStatus(st);
     readoutShown_ = st;
     readoutClock_.start();
-}
-
-MainWindow::HistoryStep MainWindow::historyStep(int stroke) const {
-    for (int i = undo_->count() - 1; i >= 0; --i) {
-        // (The stack hands its steps out const; their names and refusals are theirs.)
-        auto* command = dynamic_cast<StrokeCommand*>(const_cast<QUndoCommand*>(undo_->command(i)));
-        if (command && command->stroke() == stroke) return {command, i};
-    }
-    return {};
 }
 
 void MainWindow::setEditUnderWay(bool folding, bool settling) {

@@ -34,7 +34,6 @@ class ParameterPanel;
 class RecentFiles;
 class SolverPanel;
 class StatusReadout;
-class StrokeCommand;
 class SimulationThread;
 class Viewport;
 class ViewportInput;
@@ -135,12 +134,6 @@ class MainWindow : public QMainWindow {
     QActionGroup* languageGroup_ = nullptr;
 
     QString scene_ = QStringLiteral("press");
-    // The History's step for the session's stroke, and where it stands in the stack.
-    struct HistoryStep {
-        StrokeCommand* command = nullptr;
-        int index = -1;
-    };
-    HistoryStep historyStep(int stroke) const;
     bool foldUnderWay_ = false;
     bool settleUnderWay_ = false;
     void setEditUnderWay(bool folding, bool settling);
