@@ -136,6 +136,7 @@ void EditSession::replaceWorld(const World& world) {
     grabbed_ = kNone; // a vertex of the old sheet (the new Simulation holds none)
     strokes_.clear();
     recounted_.clear();
+    resetSeenAt_.reset();
     sheet_ = 0;
     // A stroke held across New goes on from the new sheet.
     if (pressed_) beginStroke();
@@ -337,9 +338,17 @@ const EditSession::Stroke* EditSession::pinThatHeld(Index vertex) const {
     return nullptr;
 }
 
+void EditSession::shiftScript(std::vector<PinGroup>& pins, double shift) {
+    for (PinGroup& g : pins) {
+        g.start += shift;
+        g.until += shift;
+        g.release += shift;
+    }
+}
+
 EditSession::SheetLook EditSession::look() const {
-    const Sheet& s = sim_.world().sheet;
-    return {s.verts.x, s.verts.v, s.paper};
+    const World& w = sim_.world();
+    return {w.sheet.verts.x, w.sheet.verts.v, w.sheet.paper, w.script.pins, w.time};
 }
 
 bool EditSession::restore(const SheetLook& look) {
@@ -348,6 +357,13 @@ bool EditSession::restore(const SheetLook& look) {
     s.verts.x = look.x;
     s.verts.v = look.v;
     s.paper = look.paper;
+    // The scene's own motions as they were then too, going on from now: given back
+    // mid-gather at a later time of the script, crumple-cycles' rim was where the script
+    // had not yet brought it, and the next pull flat stretched the sheet 111-159 % (a
+    // helper's session, Reset undone and redone with two pushes).
+    World& w = sim_.world();
+    w.script.pins = look.scriptPins;
+    shiftScript(w.script.pins, w.time - look.time);
     sim_.restartIntegrator();
     return true;
 }
@@ -361,7 +377,7 @@ void EditSession::noteWhatAResetSees() {
     resetSeenAt_.reset();
     const Stroke* newest = newestApplied();
     if (newest && newest->worldAfter && newest->sheetAfter == sheet_ && redoWaiting())
-        resetSeenAt_ = std::make_shared<const World>(sim_.world());
+        resetSeenAt_ = std::make_shared<const World>(worldToSave());
 }
 
 void EditSession::beginStroke() {
@@ -456,7 +472,8 @@ void EditSession::keepSettlingWithLastStroke(bool forALaterRedo) {
     // it back, so the next step is redone on the mesh it began on.
     if (Stroke* newest = newestApplied();
         newest && newest->worldAfter && newest->sheetAfter == sheet_) {
-        if (!forALaterRedo) newest->worldAfter = std::make_shared<const World>(sim_.world());
+        // (Without the hand's pin: a held grab is no pin of the sheet's.)
+        if (!forALaterRedo) newest->worldAfter = std::make_shared<const World>(worldToSave());
         return;
     }
     keepSettlingWithLastStroke(static_cast<Index>(sim_.world().sheet.events.size()), look(),
@@ -547,12 +564,7 @@ void EditSession::swapSheet(const World& world, int sheet) {
     // moves with it: a fresh scene starts its pins' motions now, and a sheet given back
     // by an undo goes on from where it was. Left at the old times, a Reset of
     // crumple-cycles mid-gather pulled the flat rim out to twice its size.
-    const double shift = time - w.time;
-    for (PinGroup& g : w.script.pins) {
-        g.start += shift;
-        g.until += shift;
-        g.release += shift;
-    }
+    shiftScript(w.script.pins, time - w.time);
     w.time = time;
     sheet_ = sheet;
     settledSince_ = kNone;

@@ -131,10 +131,10 @@ class EditSession {
 
     // Reset: the sheet starts again from `world` (the scene as New makes it) as an undo
     // step, unlike New and Open: undo gives back the sheet as it was, with the strokes
-    // made on it, and redo the fresh sheet as the next step found it (or as it was when
-    // the Reset was undone, if no step came after it). The clock runs on (commands stay in step
-    // order) and the tool stays where it is. A grab is let go; refused while the push
-    // tool is pressed.
+    // made on it, and redo the fresh sheet as the next edit found it (or as it was when
+    // the Reset was undone, if no step came after it). The clock runs on (commands stay
+    // in step order) and the tool stays where it is. A grab is let go; refused while the
+    // push tool is pressed.
     std::optional<StrokeEnd> reset(const World& world);
 
     // Fold (FoldPlan.h): the flap is pinned and carried round the line, held, and let go;
@@ -230,7 +230,12 @@ class EditSession {
     struct SheetLook {
         std::vector<Vec3> x, v;
         PaperState paper;
+        // The scene's scripted pins and the clock then: where the script's motions stood.
+        std::vector<PinGroup> scriptPins;
+        double time = 0.0;
     };
+    // Moves a script's times by `shift` seconds (its motions happen that much later).
+    static void shiftScript(std::vector<PinGroup>& pins, double shift);
     struct MeshSize {
         Index vertices = 0, springs = 0, triangles = 0;
         bool operator==(const MeshSize&) const = default;
@@ -259,7 +264,9 @@ class EditSession {
         // another, so undo and redo need that sheet.
         int sheet = 0;
         // A Reset: the whole sheet before it (as the last do left it) and after it (as
-        // the next edit found it, keepSettlingWithLastStroke), and which sheet each is.
+        // the next edit found it, or its undo as the newest step, through
+        // keepSettlingWithLastStroke, or through resetSeenAt_ while a redo waited), and
+        // which sheet each is.
         std::shared_ptr<const World> worldBefore, worldAfter;
         int sheetBefore = 0, sheetAfter = 0;
     };
@@ -277,7 +284,9 @@ class EditSession {
     // stroke ended, and the sheet as it is now, become that stroke's, so that its redo
     // gives back the sheet the next edit began on (whose redo needs that mesh).
     // `forALaterRedo`: an undone step after it waits for its redo, which needs the mesh
-    // without this damage (Stroke::sinceLaterUndo).
+    // without this damage (Stroke::sinceLaterUndo). A Reset's step keeps no damage log
+    // of its own: its worldAfter becomes the whole world as it is now (without the hand's
+    // pin), and with `forALaterRedo` nothing changes.
     void keepSettlingWithLastStroke(bool forALaterRedo = false);
     // The same with the damage log up to `until` and the sheet as `then` shows it.
     void keepSettlingWithLastStroke(Index until, SheetLook then, bool forALaterRedo = false);

@@ -576,6 +576,61 @@ class TestEditSession : public QObject {
         QVERIFY(session.world().sheet.verts.x == atSecondUndo.verts.x);
     }
 
+    // Undo and redo give back the scene's own motions where they stood with the sheet
+    // they give back: crumple-cycles' rim, given back as it was at the undo while the
+    // script went on from where the Reset's redo had put it, was pulled flat to 111-159 %
+    // stretch (a helper's session).
+    void undoAndRedoGiveBackWhereTheScenesMotionsStood() {
+        EditSession session(test::jacobiScene("press"));
+        const auto reset = session.reset(test::jacobiScene("crumple-cycles"));
+        QVERIFY(reset);
+        QCOMPARE(session.advance(240), StepStatus::Ok);
+        // How far into its script the sheet is: the same for every group.
+        const auto phase = [&] {
+            return session.world().time - session.world().script.pins.front().start;
+        };
+        QVERIFY(!session.world().script.pins.empty());
+        const double pressedAt = phase();
+        const auto push = pushStroke(session, 0.0, 0.6);
+        QVERIFY(push && push->events > 0);
+        QCOMPARE(session.advance(192), StepStatus::Ok);
+        const double undoneAt = phase();
+        const Sheet seen = session.world().sheet;
+        QVERIFY(session.undoStroke(push->stroke));
+        QCOMPARE(phase(), pressedAt); // the sheet as pressed, and its motions as then
+        QCOMPARE(session.advance(192), StepStatus::Ok);
+        QVERIFY(session.undoStroke(reset->stroke));
+        QCOMPARE(session.advance(192), StepStatus::Ok);
+        QVERIFY(session.redoStroke(reset->stroke));
+        QCOMPARE(phase(), pressedAt); // the sheet the push found
+        QCOMPARE(session.advance(192), StepStatus::Ok);
+        QVERIFY(session.redoStroke(push->stroke));
+        QVERIFY(session.world().sheet.verts.x == seen.verts.x);
+        QCOMPARE(phase(), undoneAt);
+    }
+
+    // An undo of a Reset while a grab holds its fresh sheet keeps that sheet for the redo
+    // without the hand's pin (a held grab pins its vertex for the step): redone, the sheet
+    // had a pin nobody set, and it was saved with it.
+    void aResetUndoneDuringAGrabIsRedoneWithoutTheHandsPin() {
+        EditSession session(test::jacobiScene("press"));
+        const auto reset = session.reset(test::jacobiScene("press"));
+        QVERIFY(reset);
+        const auto pins = [&] {
+            const auto& p = session.world().sheet.verts.pinned;
+            return std::count(p.begin(), p.end(), 1);
+        };
+        QCOMPARE(pins(), 0);
+        session.grab(session.world().sheet.verts.x[0], true, true);
+        QVERIFY(session.grabbing());
+        QCOMPARE(session.advance(4), StepStatus::Ok);
+        QCOMPARE(pins(), 1); // the hand's
+        QVERIFY(session.undoStroke(reset->stroke));
+        QVERIFY(session.redoStroke(reset->stroke));
+        QVERIFY(!session.grabbing());
+        QCOMPARE(pins(), 0);
+    }
+
     // The same with the sheet the user's was: a Reset to `crumple-cycles`, whose pins
     // gather the fresh sheet and break it before the first stroke on it, and go on
     // gathering it between the clicks of the undos and redos (a helper's session, playing,
