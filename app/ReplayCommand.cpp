@@ -125,7 +125,9 @@ int runReplay(const QStringList& arguments) {
     stats[QStringLiteral("complete")] = failure.empty();
     stats[QStringLiteral("threads")] = session.simulation().threads();
     // A complete replay that ends elsewhere than the recording says: made by another
-    // version of PaperFold (its undo and redo changed, say), it replays as this one does.
+    // version of PaperFold (its undo and redo changed, say), it replays as this one does;
+    // made by this one, replays are bit for bit, so it is a bug. The file does not say
+    // which version made it, so the message names both.
     const QString recorded = log.endState
                                  ? QStringLiteral("%1").arg(*log.endState, 16, 16, QLatin1Char('0'))
                                  : QString();
@@ -147,8 +149,9 @@ int runReplay(const QStringList& arguments) {
         err << "paperfold: warning: the replay ended in state "
             << stats[QStringLiteral("state_hash")].toString() << ", the session it recorded in "
             << recorded
-            << ": the recording was made by another version of PaperFold, and this one does "
-               "it differently\n";
+            << ": a recording made by another version of PaperFold replays as this version "
+               "does; one made by this version should not (a bug: please report it with the "
+               "recording)\n";
     if (!failure.empty()) {
         err << "paperfold: the replay stopped: " << QString::fromStdString(failure) << '\n';
         return 3;

@@ -447,12 +447,24 @@ class TestEditor : public QObject {
             QCOMPARE(window->undoStack()->index(), 1);
             moveMouse(view, p + QPoint(6, 0), Qt::LeftButton);
             QVERIFY2(held(), tool);
+            // The stack's own actions enable themselves when its index moves: still held.
+            window->undoStack()->undo();
+            QVERIFY2(held(), tool);
+            window->undoStack()->redo();
+            QVERIFY2(held(), tool);
             QTest::mouseRelease(view, Qt::LeftButton, {}, p + QPoint(6, 0));
+            // Let go, the stroke becomes a step a frame later (strokeRecorded): until the
+            // simulation thread has answered (no event has been processed since the
+            // release), Undo waits; Ctrl+Z undid the step before the push.
+            QVERIFY2(history->isEnabled(), tool);
+            QVERIFY2(!window->action("undo")->isEnabled(), tool);
+            QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
+            QCOMPARE(window->undoStack()->index(), 1);
+            window->simulation()->sync();
+            QCoreApplication::processEvents();
             QVERIFY2(free(), tool);
             moveMouse(view, p);
             // Paused, the press moved nothing: no step was made, the redo still waits.
-            window->simulation()->sync();
-            QCoreApplication::processEvents();
             QCOMPARE(window->undoStack()->index(), 1);
             QCOMPARE(window->undoStack()->count(), 2);
         }
@@ -461,6 +473,8 @@ class TestEditor : public QObject {
         QTest::mousePress(view, Qt::LeftButton, {}, p);
         QVERIFY(held());
         window->action("tool.pin")->trigger();
+        window->simulation()->sync();
+        QCoreApplication::processEvents();
         QVERIFY(free());
         QTest::mouseRelease(view, Qt::LeftButton, {}, p);
         QVERIFY(free());
@@ -510,9 +524,11 @@ class TestEditor : public QObject {
                  qPrintable(window->undoStack()->text(0)));
     }
 
-    // An undo or redo the session refuses changes nothing, and the History steps back to
-    // what the sheet is: it moved at the click, and a user's showed a push done whose redo
-    // had been refused (his next Undo of it then took back the steps before it).
+    // An undo or redo the session refuses does not take place, and the History steps back:
+    // it moved at the click, and a user's showed a push done whose redo had been refused
+    // (his next Undo of it then took back the steps before it). The first refusal of each
+    // kind is made up here (nothing the editor offers is refused now); the undo refused
+    // in the middle is the session's own.
     void aRefusedUndoOrRedoStepsTheHistoryBack() {
         QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
         window->action("reset")->trigger();
@@ -1920,6 +1936,15 @@ class TestEditor : public QObject {
         for (int k = 0; k < 30; ++k) window->simulation()->stepOnce(); // and kept again
         window->simulation()->sync();
         QCOMPARE(worldOf(*window)->sheet.verts.x, kept->sheet.verts.x);
+        // Settle on a settled sheet is refused by the session; Undo does not wait for a
+        // Settle that never comes (paused, nothing else published to say so).
+        QCoreApplication::processEvents();
+        QVERIFY(window->action("undo")->isEnabled());
+        window->action("settle")->trigger();
+        QVERIFY(!window->action("undo")->isEnabled());
+        window->simulation()->sync();
+        QTRY_VERIFY(window->action("undo")->isEnabled());
+        QCOMPARE(window->undoStack()->count(), 2);
     }
 
     // Tools ▸ Fold: a line drawn across the sheet folds it (the lighter side carried

@@ -251,8 +251,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         statusBar()->clearMessage();
         gateUndo();
     });
-    connect(input_, &ViewportInput::holdChanged, this, &MainWindow::gateUndo);
-    // An undo or redo lets go of a held grab (EditSession); the hand follows.
+    // The stack's own actions enable themselves after indexChanged (createUndoAction):
+    // gated again after them, or a step back of the History while the mouse held the
+    // paper gave Ctrl+Z back.
+    connect(undo_, &QUndoStack::canUndoChanged, this, &MainWindow::gateUndo);
+    connect(undo_, &QUndoStack::canRedoChanged, this, &MainWindow::gateUndo);
+    connect(sim_.get(), &SimulationThread::allAnswered, this, &MainWindow::gateUndo);
+    connect(input_, &ViewportInput::holdChanged, this, [this](bool holding) {
+        // Let go, the push or grab becomes a step (strokeRecorded) a frame later: Undo
+        // waits for it, or it would undo the step before.
+        if (!holding) sim_->awaitAnswer();
+        gateUndo();
+    });
+    // An undo or redo lets go of a held grab (EditSession); the hand follows. (Undo and
+    // Redo wait while the mouse holds the paper, so this is only a guard.)
     connect(sim_.get(), &SimulationThread::strokeUndone, input_, &ViewportInput::letGo);
     connect(sim_.get(), &SimulationThread::strokeRedone, input_, &ViewportInput::letGo);
 
@@ -663,8 +675,12 @@ void MainWindow::gateUndo() {
     // settled undid the step before it, where a user meant the Settle.
     const bool busy = foldUnderWay_ || settleUnderWay_ || input_->toolPressed();
     undoView_->setEnabled(!busy);
-    action("undo")->setEnabled(!busy && undo_->canUndo());
-    action("redo")->setEnabled(!busy && undo_->canRedo());
+    // Until the session has answered what was sent (SimulationThread::awaitingAnswers),
+    // for a frame or so: only the actions, so that the History does not flicker grey at
+    // every undo.
+    const bool waiting = busy || sim_->awaitingAnswers();
+    action("undo")->setEnabled(!waiting && undo_->canUndo());
+    action("redo")->setEnabled(!waiting && undo_->canRedo());
 }
 
 QString MainWindow::foldAnswerText(FoldRefusal refusal) {

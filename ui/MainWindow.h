@@ -138,7 +138,9 @@ class MainWindow : public QMainWindow {
     bool settleUnderWay_ = false;
     void setEditUnderWay(bool folding, bool settling);
     void showReadouts(const SimulationStatus& st);
-    // Undo, Redo and the history enabled as the stack allows, unless a fold is under way.
+    // Undo, Redo and the history enabled as the stack allows, unless a fold is carried,
+    // a Settle settles, the mouse holds the paper, or (Undo and Redo only) the simulation
+    // has not answered the last click or release yet.
     void gateUndo();
     // What the status bar says to a fold: that it began, or why it was refused.
     static QString foldAnswerText(FoldRefusal refusal);

@@ -54,6 +54,14 @@ void SimulationThread::forwardWorkerSignals() {
     forward(&SimulationWorker::foldLeftPaperBehind, &SimulationThread::foldLeftPaperBehind);
     forward(&SimulationWorker::worldReplaced, &SimulationThread::worldReplaced);
     forward(&SimulationWorker::diverged, &SimulationThread::diverged);
+    connect(
+        worker_, &SimulationWorker::answered, this,
+        [this] {
+            emitOnGuiThread([this] {
+                if (--unanswered_ == 0) emit allAnswered();
+            });
+        },
+        Qt::DirectConnection);
 }
 
 std::shared_ptr<const SheetSnapshot> SimulationThread::latestSnapshot() const {
@@ -129,9 +137,17 @@ void SimulationThread::reset(const World& world) {
 }
 void SimulationThread::undoStroke(int stroke) {
     PF_POST(undoStroke(stroke));
+    awaitAnswer();
 }
 void SimulationThread::redoStroke(int stroke) {
     PF_POST(redoStroke(stroke));
+    awaitAnswer();
+}
+void SimulationThread::awaitAnswer() {
+    ++unanswered_;
+    // Commands are applied in order and the signals they emit reach the GUI in order, so
+    // this comes after every answer to what was sent before it.
+    PF_POST(answer());
 }
 void SimulationThread::settle() {
     PF_POST(settle());

@@ -54,8 +54,18 @@ class SimulationThread : public QObject {
     // Simulation ▸ Reset: the sheet starts again from `world`, as an undo step
     // (EditSession::reset), unlike replaceWorld.
     void reset(const World& world);
+    // Each is answered (strokeUndone or strokeUndoRefused, strokeRedone or
+    // strokeRedoRefused) before awaitingAnswers() is false again.
     void undoStroke(int stroke);
     void redoStroke(int stroke);
+    // What the simulation thread makes of everything sent so far reaches the GUI before
+    // awaitingAnswers() is false again: after a release, the step it made (strokeRecorded).
+    void awaitAnswer();
+    // Commands sent with undoStroke, redoStroke or awaitAnswer not answered yet. The
+    // History waits meanwhile: it moves at a click, and a click before the answer to the
+    // last one (a Ctrl+Z right after a push's release, before the push was in the
+    // History) undid the step before it.
+    bool awaitingAnswers() const { return unanswered_ > 0; }
     // Lets the sheet come to rest without damage and keeps it so until the next edit
     // (EditSession::settle); answered by settled() once it is frozen.
     void settle();
@@ -96,6 +106,7 @@ class SimulationThread : public QObject {
     // was published (its snapshotReady comes first).
     void worldReplaced();
     void diverged(qint64 step);
+    void allAnswered(); // awaitingAnswers() became false
 
     // Internal wake-ups, connected queued at construction. They carry nothing and name
     // no object, so no data and no object crosses threads through Qt's (to
@@ -120,6 +131,7 @@ class SimulationThread : public QObject {
     // Runs `read` on the simulation thread between frames and waits for it.
     void callOnWorker(const std::function<void(SimulationWorker&)>& read);
 
+    int unanswered_ = 0; // GUI thread only
     SimulationChannel channel_;
     CrossThreadQueue<> toGui_;
 

@@ -135,6 +135,9 @@ void SimulationWorker::redoStroke(int stroke) {
 void SimulationWorker::settle() {
     editedSinceShown_ = true;
     session_.settle();
+    // Refused (a settled sheet, say), the editor would wait for a Settle that never comes
+    // (MainWindow::gateUndo) until something else published; paused, nothing does.
+    publish();
 }
 
 void SimulationWorker::advance(int steps) {

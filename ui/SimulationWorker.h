@@ -44,6 +44,7 @@ class SimulationWorker : public QObject {
     void undoStroke(int stroke);
     void redoStroke(int stroke);
     void settle();
+    void answer() { emit answered(); }
     const EditSession& session() const { return session_; }
 
     // Applies every command the GUI queued.
@@ -59,6 +60,7 @@ class SimulationWorker : public QObject {
     // sheet is not as that step left it, or found it.
     void strokeUndoRefused(int stroke);
     void strokeRedoRefused(int stroke);
+    void answered(); // SimulationThread::awaitAnswer
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
     void settled(int stroke);       // a Settle froze the sheet: an undo step
