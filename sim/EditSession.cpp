@@ -375,9 +375,7 @@ EditSession::MeshSize EditSession::meshSize() const {
 
 void EditSession::noteWhatAResetSees() {
     resetSeenAt_.reset();
-    const Stroke* newest = newestApplied();
-    if (newest && newest->worldAfter && newest->sheetAfter == sheet_ && redoWaiting())
-        resetSeenAt_ = std::make_shared<const World>(worldToSave());
+    if (newestReset() && redoWaiting()) resetSeenAt_ = std::make_shared<const World>(worldToSave());
 }
 
 void EditSession::beginStroke() {
@@ -454,6 +452,11 @@ std::vector<EditSession::StrokeEnd> EditSession::takeRecounted() {
     return std::exchange(recounted_, {});
 }
 
+EditSession::Stroke* EditSession::newestReset() {
+    Stroke* newest = newestApplied();
+    return newest && newest->worldAfter && newest->sheetAfter == sheet_ ? newest : nullptr;
+}
+
 EditSession::Stroke* EditSession::newestApplied() {
     auto done = std::find_if(strokes_.rbegin(), strokes_.rend(),
                              [](const Stroke& st) { return st.applied; });
@@ -470,10 +473,9 @@ void EditSession::keepSettlingWithLastStroke(bool forALaterRedo) {
     // A Reset's step is the world it put in place; what that sheet did since (breaks
     // included: crumple-cycles' pins gather it at once) is that world now. Its redo gives
     // it back, so the next step is redone on the mesh it began on.
-    if (Stroke* newest = newestApplied();
-        newest && newest->worldAfter && newest->sheetAfter == sheet_) {
+    if (Stroke* reset = newestReset()) {
         // (Without the hand's pin: a held grab is no pin of the sheet's.)
-        if (!forALaterRedo) newest->worldAfter = std::make_shared<const World>(worldToSave());
+        if (!forALaterRedo) reset->worldAfter = std::make_shared<const World>(worldToSave());
         return;
     }
     keepSettlingWithLastStroke(static_cast<Index>(sim_.world().sheet.events.size()), look(),
@@ -502,8 +504,8 @@ EditSession::StrokeEnd EditSession::keepStroke(Stroke stroke, StrokeKind kind) {
     // The step drops the redos that waited (the editor's History does): the damage since
     // their undo is the stroke's before it now, up to where this one began.
     if (redoWaiting() && !stroke.worldAfter) {
-        if (Stroke* newest = newestApplied(); newest && newest->worldAfter && resetSeenAt_)
-            newest->worldAfter = resetSeenAt_;
+        if (Stroke* reset = newestReset(); reset && resetSeenAt_)
+            reset->worldAfter = resetSeenAt_;
         else
             keepSettlingWithLastStroke(stroke.firstEvent, stroke.before);
     }

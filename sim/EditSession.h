@@ -280,6 +280,8 @@ class EditSession {
     // The newest step that is done (later ones were undone, and are gone once an edit
     // begins); null if none is.
     Stroke* newestApplied();
+    // The newest step done if it is a Reset to the sheet in place; null otherwise.
+    Stroke* newestReset();
     // When the next edit begins: the damage the sheet made settling since the newest
     // stroke ended, and the sheet as it is now, become that stroke's, so that its redo
     // gives back the sheet the next edit began on (whose redo needs that mesh).
