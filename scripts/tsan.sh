@@ -7,7 +7,7 @@
 #                              export thread, the viewport, and the step on several
 #                              threads): what CI runs, to stay within its time
 # Other arguments go to ctest, e.g. `scripts/tsan.sh -R test_editor`
-# (every share of the editor suite: test_editor.1, .2 and, under ThreadSanitizer, .3).
+# (every share of the editor suite: test_editor.1, .2 and, under ThreadSanitizer, .3 and .4).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 targets=()
