@@ -33,6 +33,13 @@ Topology topology(const Sheet& s) {
     return {s.verts.size(), s.springs.size(), s.triangleCount(), active};
 }
 
+// The sheet as it was seen: the same mesh and every vertex where it was, bit for bit.
+#define QCOMPARE_SHEET(now, seen)                                                                  \
+    do {                                                                                           \
+        QCOMPARE(topology(now), topology(seen));                                                   \
+        QVERIFY((now).verts.x == (seen).verts.x);                                                  \
+    } while (false)
+
 // One stroke along the press scene's scripted path (down onto the sheet, across it,
 // up again), as the editor's mouse would drive it: one target per 1/60 s frame.
 std::optional<EditSession::StrokeEnd> pushStroke(EditSession& session, double from, double to) {
@@ -331,8 +338,7 @@ class TestEditSession : public QObject {
         const auto recovered = session.undoStroke(end->stroke);
         QVERIFY(recovered.has_value() && *recovered >= end->events);
         const Sheet& undone = session.world().sheet;
-        QCOMPARE(topology(undone), topology(before));
-        QVERIFY(undone.verts.x == before.verts.x);
+        QCOMPARE_SHEET(undone, before);
         QVERIFY(undone.verts.v == before.verts.v);
         QVERIFY(undone.springs.rest == before.springs.rest);
         // Nor does the editor's break rate still count the breaks the undo took back.
@@ -340,8 +346,7 @@ class TestEditSession : public QObject {
         QCOMPARE(breaksSince(undone, strokeStep), 0);
         // Redo gives back what was seen before the undo, settling included.
         QCOMPARE(session.redoStroke(end->stroke), recovered);
-        QCOMPARE(topology(session.world().sheet), topology(seen));
-        QVERIFY(session.world().sheet.verts.x == seen.verts.x);
+        QCOMPARE_SHEET(session.world().sheet, seen);
         QVERIFY(session.world().sheet.verts.v == seen.verts.v);
         // Creases keep the length they broke at, so the fold holds when steps resume.
         QVERIFY(session.world().sheet.springs.rest == seen.springs.rest);
@@ -407,13 +412,11 @@ class TestEditSession : public QObject {
         const Sheet seenAtTheSecondUndo = session.world().sheet;
         QVERIFY(session.undoStroke(first.stroke).has_value());
         QVERIFY(session.redoStroke(first.stroke).has_value());
-        QCOMPARE(topology(session.world().sheet), topology(seenAtTheSecondUndo));
-        QVERIFY(session.world().sheet.verts.x == seenAtTheSecondUndo.verts.x);
+        QCOMPARE_SHEET(session.world().sheet, seenAtTheSecondUndo);
         const auto redone = session.redoStroke(second.stroke);
         QVERIFY(redone.has_value());
         QVERIFY2(*redone > 0, "the second push's redo broke nothing");
-        QCOMPARE(topology(session.world().sheet), topology(seen));
-        QVERIFY(session.world().sheet.verts.x == seen.verts.x);
+        QCOMPARE_SHEET(session.world().sheet, seen);
         QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
     }
 
@@ -432,16 +435,14 @@ class TestEditSession : public QObject {
             const Sheet seen = session.world().sheet;
             QVERIFY(session.undoStroke(first.stroke));
             QVERIFY(session.redoStroke(first.stroke));
-            QCOMPARE(topology(session.world().sheet), topology(seen));
-            QVERIFY(session.world().sheet.verts.x == seen.verts.x);
+            QCOMPARE_SHEET(session.world().sheet, seen);
         };
         for (int round = 0; round < 2; ++round) {
             const Sheet seen = session.world().sheet;
             undoBothAndRedoTheFirst();
             if (QTest::currentTestFailed()) return;
             QVERIFY(session.redoStroke(second.stroke));
-            QCOMPARE(topology(session.world().sheet), topology(seen));
-            QVERIFY(session.world().sheet.verts.x == seen.verts.x);
+            QCOMPARE_SHEET(session.world().sheet, seen);
         }
         // A new push drops the second's redo; it and the first undone, both come back.
         QVERIFY(session.undoStroke(second.stroke));
@@ -453,8 +454,7 @@ class TestEditSession : public QObject {
         QVERIFY(session.undoStroke(first.stroke));
         QVERIFY(session.redoStroke(first.stroke));
         QVERIFY(session.redoStroke(third->stroke));
-        QCOMPARE(topology(session.world().sheet), topology(seen));
-        QVERIFY(session.world().sheet.verts.x == seen.verts.x);
+        QCOMPARE_SHEET(session.world().sheet, seen);
         QCOMPARE(QString::fromStdString(validateSheet(session.world().sheet)), QString());
     }
 
@@ -495,11 +495,9 @@ class TestEditSession : public QObject {
                 QVERIFY(session.redoStroke(pinB->stroke));
             }
             QVERIFY(session.redoStroke(first.stroke));
-            QCOMPARE(topology(session.world().sheet), topology(atFirstUndo));
-            QVERIFY(session.world().sheet.verts.x == atFirstUndo.verts.x);
+            QCOMPARE_SHEET(session.world().sheet, atFirstUndo);
             QVERIFY(session.redoStroke(second.stroke));
-            QCOMPARE(topology(session.world().sheet), topology(atSecondUndo));
-            QVERIFY(session.world().sheet.verts.x == atSecondUndo.verts.x);
+            QCOMPARE_SHEET(session.world().sheet, atSecondUndo);
         }
     }
 
@@ -555,8 +553,7 @@ class TestEditSession : public QObject {
         const Sheet atUndo = session.world().sheet;
         QVERIFY(session.undoStroke(reset->stroke));
         QVERIFY(session.redoStroke(reset->stroke));
-        QCOMPARE(topology(session.world().sheet), topology(atUndo));
-        QVERIFY(session.world().sheet.verts.x == atUndo.verts.x);
+        QCOMPARE_SHEET(session.world().sheet, atUndo);
 
         breakAsItSettles(session); // and again, before the first step on it
         const auto pushes = pushTwice(session);
@@ -572,8 +569,7 @@ class TestEditSession : public QObject {
         QCOMPARE(topology(session.world().sheet), topology(atResetUndo));
         QVERIFY(session.redoStroke(first.stroke));
         QVERIFY2(session.redoStroke(second.stroke), "the second push's redo was refused");
-        QCOMPARE(topology(session.world().sheet), topology(atSecondUndo));
-        QVERIFY(session.world().sheet.verts.x == atSecondUndo.verts.x);
+        QCOMPARE_SHEET(session.world().sheet, atSecondUndo);
     }
 
     // Undo and redo give back the scene's own motions where they stood with the sheet
@@ -667,8 +663,7 @@ class TestEditSession : public QObject {
         QVERIFY2(session.redoStroke(first.stroke), "the first push's redo was refused");
         QVERIFY(wait(session));
         QVERIFY2(session.redoStroke(second.stroke), "the second push's redo was refused");
-        QCOMPARE(topology(session.world().sheet), topology(atSecondUndo));
-        QVERIFY(session.world().sheet.verts.x == atSecondUndo.verts.x);
+        QCOMPARE_SHEET(session.world().sheet, atSecondUndo);
 
         // A push made after an undo, on the gathered sheet, while the undone push's redo
         // waited: redone after the Reset's undo and redo, on the mesh it began on.
@@ -687,8 +682,7 @@ class TestEditSession : public QObject {
         QVERIFY2(session.redoStroke(first.stroke), "the first push's redo was refused");
         QVERIFY(wait(session));
         QVERIFY2(session.redoStroke(third->stroke), "the new push's redo was refused");
-        QCOMPARE(topology(session.world().sheet), topology(atThirdUndo));
-        QVERIFY(session.world().sheet.verts.x == atThirdUndo.verts.x);
+        QCOMPARE_SHEET(session.world().sheet, atThirdUndo);
 
         // And one made on the Reset's sheet while the first push's redo waited.
         QVERIFY(session.undoStroke(third->stroke));
@@ -704,8 +698,7 @@ class TestEditSession : public QObject {
         QVERIFY(session.redoStroke(reset->stroke));
         QVERIFY(wait(session));
         QVERIFY2(session.redoStroke(fourth->stroke), "the push after the undo was refused");
-        QCOMPARE(topology(session.world().sheet), topology(atFourthUndo));
-        QVERIFY(session.world().sheet.verts.x == atFourthUndo.verts.x);
+        QCOMPARE_SHEET(session.world().sheet, atFourthUndo);
     }
 
     // A redo while a push that broke the sheet is held is refused before it takes back
@@ -748,8 +741,7 @@ class TestEditSession : public QObject {
         QVERIFY(session.undoStroke(first.stroke).has_value());
         QVERIFY(session.redoStroke(first.stroke).has_value());
         QCOMPARE(session.redoStroke(third->stroke), std::optional<int>(third->events));
-        QCOMPARE(topology(session.world().sheet), topology(seen));
-        QVERIFY(session.world().sheet.verts.x == seen.verts.x);
+        QCOMPARE_SHEET(session.world().sheet, seen);
     }
 
     void redoIsRefusedOnAMeshAnotherStrokeChanged() {
@@ -1529,8 +1521,7 @@ class TestEditSession : public QObject {
         // (and those the sheet made settling after it)
         const auto recovered = session.undoStroke(crumple->stroke);
         QVERIFY(recovered && *recovered >= crumple->events);
-        QCOMPARE(topology(session.world().sheet), topology(fresh.sheet));
-        QVERIFY(session.world().sheet.verts.x == fresh.sheet.verts.x);
+        QCOMPARE_SHEET(session.world().sheet, fresh.sheet);
         // Redo: the crumpled sheet as it was when Reset was chosen, settling and all.
         QCOMPARE(session.redoStroke(crumple->stroke), recovered);
         QCOMPARE(topology(session.world().sheet), crumpled);
