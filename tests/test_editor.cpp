@@ -1937,13 +1937,18 @@ class TestEditor : public QObject {
         window->simulation()->sync();
         QCOMPARE(worldOf(*window)->sheet.verts.x, kept->sheet.verts.x);
         // Settle on a settled sheet is refused by the session; Undo does not wait for a
-        // Settle that never comes (paused, nothing else published to say so).
+        // Settle that never comes (paused, nothing else published to say so), and the
+        // status bar says why instead of "Settling…" over a sheet that does not settle.
         QCoreApplication::processEvents();
         QVERIFY(window->action("undo")->isEnabled());
         window->action("settle")->trigger();
         QVERIFY(!window->action("undo")->isEnabled());
+        QVERIFY(window->statusBar()->currentMessage().startsWith(QStringLiteral("Settling")));
         window->simulation()->sync();
         QTRY_VERIFY(window->action("undo")->isEnabled());
+        QTRY_COMPARE(
+            window->statusBar()->currentMessage(),
+            QStringLiteral("Already settled: the sheet stays as it is until the next edit."));
         QCOMPARE(window->undoStack()->count(), 2);
     }
 

@@ -624,6 +624,14 @@
         <source>Only part of the fold held: %1 % of the paper on the flap&apos;s side lies unfolded. The fold holds the paper that lies flat along the line, not layers above or below it. Edit ▸ Undo unfolds the paper.</source>
         <translation>Die Faltung hat nur zum Teil gehalten: %1 % des Papiers auf der Seite der Lasche liegt ungefaltet. Die Faltung hält das Papier, das entlang der Linie flach liegt, nicht die Lagen darüber oder darunter. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
     </message>
+    <message>
+        <source>Already settled: the sheet stays as it is until the next edit.</source>
+        <translation>Bereits beruhigt: Das Blatt bleibt bis zur nächsten Bearbeitung, wie es ist.</translation>
+    </message>
+    <message>
+        <source>Not settled: an edit is under way. Settle once it is over.</source>
+        <translation>Nicht beruhigt: Eine Bearbeitung läuft noch. Beruhigen Sie das Blatt, wenn sie vorbei ist.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

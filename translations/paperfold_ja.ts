@@ -619,6 +619,14 @@
         <source>Only part of the fold held: %1 % of the paper on the flap&apos;s side lies unfolded. The fold holds the paper that lies flat along the line, not layers above or below it. Edit ▸ Undo unfolds the paper.</source>
         <translation>折りは一部しか保たれませんでした：フラップ側の紙の %1 % が折られずに残っています。折りは線に沿って平らに置かれた紙を保ち、その上下の層は保ちません。編集 ▸ 元に戻す で紙を開きます。</translation>
     </message>
+    <message>
+        <source>Already settled: the sheet stays as it is until the next edit.</source>
+        <translation>すでに静止しています：次の編集までシートはこのままです。</translation>
+    </message>
+    <message>
+        <source>Not settled: an edit is under way. Settle once it is over.</source>
+        <translation>静止できません：編集の途中です。終わってから静止させてください。</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -619,6 +619,14 @@
         <source>Only part of the fold held: %1 % of the paper on the flap&apos;s side lies unfolded. The fold holds the paper that lies flat along the line, not layers above or below it. Edit ▸ Undo unfolds the paper.</source>
         <translation>접힘이 일부만 유지되었습니다: 날개 쪽 종이의 %1 %가 접히지 않은 채 놓여 있습니다. 접기는 선을 따라 평평하게 놓인 종이를 붙잡으며, 그 위나 아래의 층은 붙잡지 않습니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
     </message>
+    <message>
+        <source>Already settled: the sheet stays as it is until the next edit.</source>
+        <translation>이미 안정됨: 다음 편집까지 시트가 그대로 유지됩니다.</translation>
+    </message>
+    <message>
+        <source>Not settled: an edit is under way. Settle once it is over.</source>
+        <translation>안정시킬 수 없습니다: 편집 중입니다. 편집이 끝난 뒤 안정시키세요.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -179,6 +179,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         statusBar()->showMessage(tr("Settled: the sheet stays as it is until the next edit."),
                                  5000);
     });
+    connect(sim_.get(), &SimulationThread::settleRefused, this, [this](bool alreadySettled) {
+        statusBar()->showMessage(
+            alreadySettled ? tr("Already settled: the sheet stays as it is until the next edit.")
+                           : tr("Not settled: an edit is under way. Settle once it is over."),
+            5000);
+    });
     connect(sim_.get(), &SimulationThread::diverged, this, [this](qint64 step) {
         playing_ = false;
         showError(

@@ -49,6 +49,7 @@ void SimulationThread::forwardWorkerSignals() {
     forward(&SimulationWorker::strokeUndone, &SimulationThread::strokeUndone);
     forward(&SimulationWorker::strokeRedone, &SimulationThread::strokeRedone);
     forward(&SimulationWorker::settled, &SimulationThread::settled);
+    forward(&SimulationWorker::settleRefused, &SimulationThread::settleRefused);
     forward(&SimulationWorker::foldAnswered, &SimulationThread::foldAnswered);
     forward(&SimulationWorker::foldSprangBack, &SimulationThread::foldSprangBack);
     forward(&SimulationWorker::foldLeftPaperBehind, &SimulationThread::foldLeftPaperBehind);

@@ -93,6 +93,9 @@ class SimulationThread : public QObject {
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
     void settled(int stroke);
+    // The session did not begin a Settle: the sheet was settled already (frozen, as the
+    // last Settle left it) or an edit was under way.
+    void settleRefused(bool alreadySettled);
     // `refusal` is a FoldRefusal: None when the fold began.
     void foldAnswered(int refusal);
     // A second after a fold was let go its flap had turned back this far, past

@@ -134,7 +134,10 @@ void SimulationWorker::redoStroke(int stroke) {
 
 void SimulationWorker::settle() {
     editedSinceShown_ = true;
+    const bool alreadySettled = session_.frozen();
     session_.settle();
+    // Said, or the status bar's "Settling…" would stand over a sheet that does not settle.
+    if (!session_.settling()) emit settleRefused(alreadySettled);
     // Refused (a settled sheet, say), the editor would wait for a Settle that never comes
     // (MainWindow::gateUndo) until something else published; paused, nothing does.
     publish();

@@ -63,8 +63,9 @@ class SimulationWorker : public QObject {
     void answered(); // SimulationThread::awaitAnswer
     void strokeUndone(int stroke, int recovered);
     void strokeRedone(int stroke, int reapplied);
-    void settled(int stroke);       // a Settle froze the sheet: an undo step
-    void foldAnswered(int refusal); // a FoldRefusal
+    void settled(int stroke);                // a Settle froze the sheet: an undo step
+    void settleRefused(bool alreadySettled); // the session did not begin the Settle
+    void foldAnswered(int refusal);          // a FoldRefusal
     void foldSprangBack(double degrees);
     void foldLeftPaperBehind(double share);
     void worldReplaced();
