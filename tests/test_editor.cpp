@@ -608,6 +608,27 @@ class TestEditor : public QObject {
         QVERIFY(encodeWorld(replayed.world()) == encodeWorld(*editor)); // everything else too
     }
 
+    // File ▸ Open Recent names each sheet as its file is named: a '&' in the name is
+    // shown, not taken for the menu's shortcut mark ("a & b.paper" read "a _b.paper"),
+    // and the entry opens that file.
+    void openRecentNamesTheFilesAsTheyAre() {
+        QTemporaryDir dir;
+        const QString name = QStringLiteral("odd n\u00e4me #1 & (x);\u00e9.paper");
+        nextFile = dir.filePath(name);
+        window->action("saveAs")->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        QAction* entry = nullptr;
+        for (QAction* a : window->findChildren<QAction*>())
+            if (a->toolTip() == nextFile) entry = a;
+        QVERIFY(entry);
+        QCOMPARE(entry->iconText(), name); // the text without its shortcut marks
+        window->newScene(QStringLiteral("drape"));
+        QTRY_VERIFY(!window->windowTitle().startsWith(name));
+        entry->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        QTRY_VERIFY(window->windowTitle().startsWith(name));
+    }
+
     void saveThenOpenRestoresTheSheetExactly() {
         QTemporaryDir dir;
         for (int k = 0; k < 60; ++k) window->simulation()->stepOnce();
@@ -1689,7 +1710,8 @@ class TestEditor : public QObject {
         // A picture from a file.
         QImage stripes(40, 30, QImage::Format_RGB32);
         stripes.fill(Qt::blue);
-        const QString picturePath = dir.filePath(QStringLiteral("stripes.png"));
+        // Named as users name files: the menu shows its '&' (a shortcut mark unless doubled).
+        const QString picturePath = dir.filePath(QStringLiteral("stripes & dots.png"));
         QVERIFY(stripes.save(picturePath));
         window->chooseFile = [&](MainWindow::FileDialog kind) {
             return kind == MainWindow::FileDialog::PaperImage ? picturePath : QString();
@@ -1699,7 +1721,9 @@ class TestEditor : public QObject {
         const PaperLook withPicture = window->viewport()->renderOptions().look;
         QCOMPARE(withPicture.texture, PaperTexture::Image);
         QCOMPARE(withPicture.image.size(), QSize(40, 30));
-        QVERIFY(window->action("look.image")->text().contains(QStringLiteral("stripes.png")));
+        QVERIFY(window->action("look.image")
+                    ->iconText()
+                    .contains(QStringLiteral("stripes & dots.png")));
 
         // The next session starts with the same look.
         lastError.clear();

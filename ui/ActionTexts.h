@@ -13,6 +13,11 @@ class ActionTexts {
 
   public:
     static void apply(const QObject* window);
+    // `text` (a file's name, say) as a menu entry shows it: a '&' is a shortcut mark
+    // to a menu unless doubled ("a & b.paper" read "a _b.paper").
+    static QString literal(QString text) {
+        return text.replace(QLatin1Char('&'), QStringLiteral("&&"));
+    }
 };
 
 } // namespace pf

@@ -1,5 +1,7 @@
 #include "PaperLookMenu.h"
 
+#include "ActionTexts.h"
+
 #include <QAction>
 #include <QActionGroup>
 #include <QFileInfo>
@@ -122,9 +124,10 @@ void PaperLookMenu::retranslate() {
     color_->setText(tr("Paper &Colour…"));
     plain_->setText(tr("&Plain"));
     grain_->setText(tr("Paper &Grain"));
-    image_->setText(look_.texture == PaperTexture::Image
-                        ? tr("P&icture: %1…").arg(QFileInfo(look_.imagePath).fileName())
-                        : tr("P&icture…"));
+    image_->setText(
+        look_.texture == PaperTexture::Image
+            ? tr("P&icture: %1…").arg(ActionTexts::literal(QFileInfo(look_.imagePath).fileName()))
+            : tr("P&icture…"));
     image_->setToolTip(tr("Print a picture over the whole sheet"));
 }
 

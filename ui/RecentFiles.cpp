@@ -1,5 +1,7 @@
 #include "RecentFiles.h"
 
+#include "ActionTexts.h"
+
 #include <QFileInfo>
 #include <QMenu>
 #include <QSettings>
@@ -31,7 +33,7 @@ void RecentFiles::rebuildMenu() {
     menu_->clear();
     const QStringList recent = QSettings().value(kSettingsKey).toStringList();
     for (const QString& path : recent) {
-        QAction* a = menu_->addAction(QFileInfo(path).fileName());
+        QAction* a = menu_->addAction(ActionTexts::literal(QFileInfo(path).fileName()));
         a->setToolTip(path);
         connect(a, &QAction::triggered, this, [this, path] { emit openRequested(path); });
     }
