@@ -86,6 +86,12 @@ SimulationStatus settledStatus(MainWindow& w) {
     return w.simulation()->status();
 }
 
+bool statusBarShows(MainWindow& w, const QString& text) {
+    for (const QLabel* label : w.statusBar()->findChildren<QLabel*>())
+        if (label->text().contains(text)) return true;
+    return false;
+}
+
 QPoint viewportCentre(MainWindow& w) {
     return w.viewport()->rect().center();
 }
@@ -494,6 +500,13 @@ class TestEditor : public QObject {
         QCOMPARE(settledStatus(*window).stepSeconds, stepped);
         window->simulation()->stepOnce();
         QVERIFY(settledStatus(*window).stepSeconds != stepped); // the new step's own
+        // A new sheet has taken no step: the last sheet's cost stood over it, paused.
+        window->newScene(QStringLiteral("drape"));
+        QCOMPARE(settledStatus(*window).stepSeconds, 0.0);
+        QTRY_VERIFY(statusBarShows(*window, QStringLiteral("no step yet · paused")));
+        window->simulation()->stepOnce();
+        QVERIFY(settledStatus(*window).stepSeconds > 0.0);
+        QTRY_VERIFY(!statusBarShows(*window, QStringLiteral("no step yet")));
     }
 
     // A push is named with what its undo takes back: what it broke, and what the sheet

@@ -97,6 +97,28 @@ class TestFramePacer : public QObject {
         QCOMPARE(pacer.pace(), 1.0);
     }
 
+    // The step time said beside the pace is the mean over the same second: 6 ms steps
+    // then 0.1 ms ones read 6 ms until a whole second of the quick ones has passed, as the
+    // pace says 0.69× until then (the last tick alone said 0.1 ms beside 0.69×).
+    void theStepTimeIsTheMeanOverThePacesSecond() {
+        FramePacer pacer;
+        const auto tick = [&](double elapsed, double cost) {
+            const int steps = pacer.stepsFor(elapsed, kDt, cost);
+            pacer.stepped(steps, steps * cost);
+        };
+        QCOMPARE(pacer.stepSeconds(), 0.0); // no second yet
+        for (int k = 0; k < 50; ++k) tick(0.024, 0.006);
+        QVERIFY(std::abs(pacer.stepSeconds() - 0.006) < 1e-12);
+        QVERIFY(std::abs(pacer.pace() - kDt / 0.006) < 1e-9);
+        for (int k = 0; k < 20; ++k) tick(0.016, 1e-4);
+        QVERIFY(std::abs(pacer.stepSeconds() - 0.006) < 1e-12); // that second still
+        for (int k = 0; k < 160; ++k) tick(0.016, 1e-4);
+        QVERIFY(std::abs(pacer.stepSeconds() - 1e-4) < 1e-12);
+        QVERIFY(std::abs(pacer.pace() - 1.0) < 0.02);
+        pacer.restart();
+        QCOMPARE(pacer.stepSeconds(), 0.0);
+    }
+
     void aRestartForgetsWhatIsOwed() {
         FramePacer pacer;
         QCOMPARE(pacer.stepsFor(0.0035, kDt), 0); // 3.5 ms owed

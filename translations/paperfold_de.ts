@@ -912,6 +912,10 @@
             <numerusform>%n Scharniere</numerusform>
         </translation>
     </message>
+    <message>
+        <source>no step yet</source>
+        <translation>noch kein Schritt</translation>
+    </message>
 </context>
 <context>
     <name>pf::StrokeHistory</name>

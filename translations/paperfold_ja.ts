@@ -903,6 +903,10 @@
             <numerusform>ヒンジ %n</numerusform>
         </translation>
     </message>
+    <message>
+        <source>no step yet</source>
+        <translation>まだステップなし</translation>
+    </message>
 </context>
 <context>
     <name>pf::StrokeHistory</name>

@@ -903,6 +903,10 @@
             <numerusform>힌지 %n</numerusform>
         </translation>
     </message>
+    <message>
+        <source>no step yet</source>
+        <translation>아직 단계 없음</translation>
+    </message>
 </context>
 <context>
     <name>pf::StrokeHistory</name>

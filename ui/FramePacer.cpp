@@ -9,6 +9,14 @@ void FramePacer::restart() {
     owed_ = 0.0;
     windowWall_ = windowSimulated_ = 0.0;
     pace_ = 1.0;
+    windowStepWall_ = 0.0;
+    windowSteps_ = 0;
+    stepSeconds_ = 0.0;
+}
+
+void FramePacer::stepped(int steps, double seconds) {
+    windowSteps_ += std::max(0, steps);
+    windowStepWall_ += std::max(0.0, seconds);
 }
 
 int FramePacer::stepsFor(double elapsed, double dt, double stepCost) {
@@ -19,6 +27,9 @@ int FramePacer::stepsFor(double elapsed, double dt, double stepCost) {
     if (windowWall_ >= 1.0) {
         pace_ = windowSimulated_ / windowWall_;
         windowWall_ = windowSimulated_ = 0.0;
+        if (windowSteps_ > 0) stepSeconds_ = windowStepWall_ / windowSteps_;
+        windowStepWall_ = 0.0;
+        windowSteps_ = 0;
     }
     return steps;
 }

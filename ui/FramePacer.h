@@ -28,6 +28,13 @@ class FramePacer {
     // and a user cannot tell that from the picture alone: 1000 steps a second of a
     // crumpled sheet drew at 5 fps and ran at about a tenth of real time, unsaid.
     double pace() const { return pace_; }
+    // Tells the pacer the wall time `seconds` that the `steps` of the last tick took.
+    void stepped(int steps, double seconds);
+    // Wall time per step over the pace's last whole second (the work told to stepped()
+    // by then), 0 until one has passed. The last tick alone did not agree with the pace:
+    // a user read "step 51822 µs · 0.54× real time" in the second after breaks made the
+    // sheet slower (at most 0.08× at that cost), and "step 20 µs · 0.13×" once it slept.
+    double stepSeconds() const { return stepSeconds_; }
 
   private:
     int stepsDue(double elapsed, double dt, double stepCost);
@@ -35,6 +42,9 @@ class FramePacer {
     double owed_ = 0.0; // seconds
     double windowWall_ = 0.0, windowSimulated_ = 0.0;
     double pace_ = 1.0;
+    double windowStepWall_ = 0.0; // seconds the steps took, in the window
+    int windowSteps_ = 0;
+    double stepSeconds_ = 0.0;
 };
 
 } // namespace pf

@@ -7,7 +7,9 @@ namespace pf {
 // Live statistics of the running simulation, for the status bar and the tests.
 struct SimulationStatus {
     std::int64_t step = 0;
-    double stepSeconds = 0.0; // wall time of one step, averaged over the last frame
+    // Wall time of one step: while playing, the mean over the pace's last second (FramePacer);
+    // paused, the last step's own; 0 on a sheet that has taken no step.
+    double stepSeconds = 0.0;
     int vertices = 0, springs = 0, breaks = 0, hinges = 0;
     int breaksLastSecond = 0; // breaks made in the last second of simulated time
     // max(l/l0 - 1, 0) over the uncreased structural springs: how far the paper is pulled

@@ -59,6 +59,10 @@ void SimulationWorker::setParams(const SimParams& params) {
 
 void SimulationWorker::replaceWorld(const World& world) {
     session_.replaceWorld(world);
+    // A new sheet has taken no step: the last sheet's cost stood over it while paused.
+    lastStepSeconds_ = 0.0;
+    stepCost_ = 0.0;
+    pacer_.restart();
     publish();
     emit worldReplaced();
 }
@@ -179,6 +183,7 @@ void SimulationWorker::frame() {
     QElapsedTimer t;
     t.start();
     advance(steps);
+    pacer_.stepped(steps, t.nsecsElapsed() * 1e-9);
     const double cost = t.nsecsElapsed() * 1e-9 / steps;
     // Averaged over the last few ticks, so that one slow tick (a break's new mesh, the
     // view taking the core) does not stop the catching up.
@@ -217,7 +222,10 @@ bool SimulationWorker::shownStillShows() const {
 
 void SimulationWorker::setClock(SimulationStatus& st) const {
     st.step = session_.world().stepCount;
-    st.stepSeconds = lastStepSeconds_;
+    // Playing, over the same second as the pace, so that the two agree; paused (or in
+    // the first second of play), the last step's own.
+    st.stepSeconds =
+        playing_ && pacer_.stepSeconds() > 0.0 ? pacer_.stepSeconds() : lastStepSeconds_;
     st.threads = session_.simulation().threads();
     st.playing = playing_;
     st.pace = pacer_.pace();

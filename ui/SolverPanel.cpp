@@ -131,7 +131,9 @@ void SolverPanel::showThreads(int threads) {
 }
 
 void SolverPanel::showStatus(const SimulationStatus& status) {
-    stepTime_->setText(tr("%1 µs").arg(status.stepSeconds * 1e6, 0, 'f', 0));
+    stepTime_->setText(status.stepSeconds > 0.0
+                           ? tr("%1 µs").arg(status.stepSeconds * 1e6, 0, 'f', 0)
+                           : QStringLiteral("–"));
     stretch_->setText(tr("max %1 %, RMS %2 %")
                           .arg(100.0 * status.maxStretch, 0, 'f', 2)
                           .arg(100.0 * status.rmsStretch, 0, 'f', 3));

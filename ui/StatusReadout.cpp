@@ -56,7 +56,8 @@ void StatusReadout::updateFps() {
 void StatusReadout::show(const SimulationStatus& st) {
     updateFps();
     // A user could not tell a sheet lying still from one that only looked still.
-    QString step = tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0);
+    QString step = st.stepSeconds > 0.0 ? tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0)
+                                        : tr("no step yet");
     // Paused, the toolbar's icon was the only sign, and a paused sheet could read "at rest".
     if (!st.playing)
         step = tr("%1 · paused").arg(step);
