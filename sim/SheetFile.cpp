@@ -814,10 +814,18 @@ std::optional<SimParams> decodeParams(const QByteArray& bytes, QString* error) {
 }
 
 WorldLoad decodeWorld(const QByteArray& bytes) {
+    // Every sheet begins with a map (its first key the magic): a file that begins with
+    // anything else is another kind of file, not a broken sheet. A text file read "the
+    // file ends after 3 bytes, ... cut short", a picture "not a valid CBOR file at byte
+    // 23", another "no top-level map".
+    constexpr unsigned kCborMap = 5; // major type, the first byte's top three bits
+    if (!bytes.isEmpty() && (static_cast<unsigned char>(bytes[0]) >> 5) != kCborMap)
+        return {std::nullopt, QStringLiteral("not a PaperFold sheet: a .paper file begins "
+                                             "otherwise (is it another kind of file?)")};
     QString error;
     const std::optional<QCborValue> root = parseBoundedCbor(bytes, sheetFileBounds(), &error);
     if (!root) return {std::nullopt, error};
-    if (!root->isMap())
+    if (!root->isMap()) // an indefinite-length map's header, say, closed as something else
         return {std::nullopt, QStringLiteral("not a PaperFold sheet (no top-level map)")};
     try {
         return {worldFromCbor(root->toMap()), {}};

@@ -520,7 +520,12 @@ class TestSheetFile : public QObject {
         QTest::addColumn<QByteArray>("bytes");
         QTest::addColumn<QString>("mentions");
         QTest::newRow("empty") << QByteArray() << "empty";
-        QTest::newRow("not cbor") << QByteArray("hello, I am a text file\n") << "";
+        // Other kinds of files say what they are not (a short text file read "cut short").
+        QTest::newRow("a text file")
+            << QByteArray("hello, I am a text file\n") << "not a PaperFold sheet";
+        QTest::newRow("a short text file") << QByteArray("vm\n") << "not a PaperFold sheet";
+        QTest::newRow("a picture")
+            << QByteArray("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16) << "not a PaperFold sheet";
         QTest::newRow("wrong magic")
             << withField({"magic"}, QStringLiteral("PaperFold shoot")) << "magic";
         QTest::newRow("wrong version") << withField({"version"}, 99) << "version 99";
