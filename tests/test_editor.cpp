@@ -812,6 +812,35 @@ class TestEditor : public QObject {
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("&File"));
     }
 
+    // Numbers are written as the language writes them: a German user read "0.10" in the
+    // spin boxes and "0.31× Echtzeit" beside German words.
+    void numbersAreWrittenAsTheLanguageWritesThem() {
+        window->panel()->phiSlider()->setValue(55);
+        QTRY_COMPARE(window->panel()->phiSpin()->text(), QStringLiteral("0.55"));
+        QVERIFY(installLanguage(QStringLiteral("de")));
+        QTRY_COMPARE(window->panel()->phiSpin()->text(), QStringLiteral("0,55"));
+        QStatusBar bar;
+        StatusReadout readout(&bar);
+        SimulationStatus st;
+        st.stepSeconds = 14468e-6;
+        st.playing = true;
+        st.pace = 0.31;
+        st.vertices = 12000; // no thousands separator: "12000", not "12.000"
+        readout.show(st);
+        QStringList shown;
+        for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
+        QVERIFY2(shown.contains(QStringLiteral("Schritt 14468 µs · 0,31× Echtzeit")),
+                 qPrintable(shown.join(QStringLiteral(" | "))));
+        QVERIFY2(shown.join(QLatin1Char(' ')).contains(QStringLiteral("12000 ")),
+                 qPrintable(shown.join(QStringLiteral(" | "))));
+        settledStatus(*window);
+        const QRegularExpression decimalComma(QStringLiteral("\\d,\\d"));
+        QTRY_VERIFY(window->solverPanel()->stretchLabel()->text().contains(decimalComma));
+        QVERIFY(installLanguage(QStringLiteral("en")));
+        QTRY_COMPARE(window->panel()->phiSpin()->text(), QStringLiteral("0.55"));
+        QTRY_VERIFY(!window->solverPanel()->stretchLabel()->text().contains(decimalComma));
+    }
+
     // The history names what a step did in plain English: "Pin 1 vertex", "Pin 3
     // vertices" (the source text says "vertex(es)"; English's plural forms are a
     // translation of their own), and so does a language without a translation.
@@ -838,18 +867,19 @@ class TestEditor : public QObject {
         st.breaks = st.breaksLastSecond = 1;
         st.hinges = 2;
         st.playing = true; // paused, the step readout says so
+        st.stepSeconds = 12e-6;
         readout.show(st);
         QStringList shown;
         for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
         QVERIFY2(shown.contains(
                      QStringLiteral("494 vertices · 2700 springs · 1 break (1/s) · 2 hinges")),
                  qPrintable(shown.join(QStringLiteral(" | "))));
-        QVERIFY(shown.contains(QStringLiteral("step 0 µs")));
+        QVERIFY(shown.contains(QStringLiteral("step 12 µs")));
         st.asleep = true;
         readout.show(st);
         shown.clear();
         for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
-        QVERIFY2(shown.contains(QStringLiteral("step 0 µs · at rest")),
+        QVERIFY2(shown.contains(QStringLiteral("step 12 µs · at rest")),
                  qPrintable(shown.join(QStringLiteral(" | "))));
         QVERIFY(!installLanguage(QStringLiteral("fr")));
         QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Pin 1 vertex"));

@@ -26,6 +26,12 @@ bool installLanguage(const QString& code) {
         delete t;
         return false;
     }
+    // Numbers as the language writes them ("0,31× Echtzeit", a spin box's "0,50"), but
+    // without thousands separators, which the readouts never had. Before the translator:
+    // installing it sends the LanguageChange at which the window says its numbers again.
+    QLocale numbers = found ? locale : QLocale(QLocale::English, QLocale::UnitedStates);
+    numbers.setNumberOptions(QLocale::OmitGroupSeparator);
+    QLocale::setDefault(numbers);
     QCoreApplication::installTranslator(t);
     current = t;
     return found || code.isEmpty() || code == QLatin1String("en");

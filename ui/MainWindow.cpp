@@ -34,6 +34,7 @@
 #include <QEventLoop>
 #include <QFileInfo>
 #include <QKeyEvent>
+#include <QLocale>
 #include <QMenuBar>
 #include <QProgressDialog>
 #include <QSettings>
@@ -584,7 +585,9 @@ void MainWindow::resizeEvent(QResizeEvent* event) {
 
 void MainWindow::retranslate() {
     ActionTexts::apply(this);
-    readoutClock_.invalidate(); // the live numbers said again, in the new language
+    // The live numbers said again, in the new language and its digits: now, since while
+    // paused no snapshot comes to say them.
+    if (readoutClock_.isValid()) showReadouts(readoutShown_);
     // The History's steps were named in the language of their time. (QUndoStack hands
     // them out const; they are ours, made with new.)
     for (int i = 0; i < undo_->count(); ++i)
@@ -621,7 +624,10 @@ void MainWindow::nameHistoryStart() {
 }
 
 void MainWindow::changeEvent(QEvent* event) {
-    if (event->type() == QEvent::LanguageChange) retranslate();
+    if (event->type() == QEvent::LanguageChange) {
+        setLocale(QLocale()); // the numbers of the docks' spin boxes (Language.cpp)
+        retranslate();
+    }
     // Back from a modal dialog, the view may get no Enter until the mouse moves.
     if (event->type() == QEvent::ActivationChange && isActiveWindow() && input_)
         input_->showToolUnderCursor();

@@ -11,6 +11,7 @@
 #include <QEvent>
 #include <QGridLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QSpinBox>
 #include <cmath>
@@ -134,9 +135,11 @@ void SolverPanel::showStatus(const SimulationStatus& status) {
     stepTime_->setText(status.stepSeconds > 0.0
                            ? tr("%1 µs").arg(status.stepSeconds * 1e6, 0, 'f', 0)
                            : QStringLiteral("–"));
+    // In the language's own digits (a decimal comma in German), as the spin boxes are.
+    const QLocale locale;
     stretch_->setText(tr("max %1 %, RMS %2 %")
-                          .arg(100.0 * status.maxStretch, 0, 'f', 2)
-                          .arg(100.0 * status.rmsStretch, 0, 'f', 3));
+                          .arg(locale.toString(100.0 * status.maxStretch, 'f', 2),
+                               locale.toString(100.0 * status.rmsStretch, 'f', 3)));
     breakRate_->setText(tr("%n per second", nullptr, status.breaksLastSecond));
 }
 

@@ -2,6 +2,7 @@
 
 #include <QEvent>
 #include <QLabel>
+#include <QLocale>
 #include <QStatusBar>
 
 namespace pf {
@@ -68,7 +69,7 @@ void StatusReadout::show(const SimulationStatus& st) {
     // (A sheet at rest keeps up whatever the last second's pace was: a user read
     // "at rest · 0.74× real time" for the second after a slow stroke.)
     const bool behind = st.playing && !st.resting() && st.pace < kBehindRealTime;
-    if (behind) step = tr("%1 · %2× real time").arg(step).arg(st.pace, 0, 'f', 2);
+    if (behind) step = tr("%1 · %2× real time").arg(step, QLocale().toString(st.pace, 'f', 2));
     step_->setText(step);
     step_->setToolTip(behind ? tr("The computer cannot take the steps as fast as they happen: "
                                   "the sheet moves slower than in real time. Fewer steps per "
