@@ -276,6 +276,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(sim_.get(), &SimulationThread::strokeRedone, input_, &ViewportInput::letGo);
 
     retranslate();
+    // Smaller, the docks' values and boxes were cut off and the legend covered the view,
+    // and the docks kept their squeezed heights when the window grew again.
+    setMinimumSize(kMinimumWidth, kMinimumHeight);
     QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
@@ -572,10 +575,25 @@ void MainWindow::fitDocks() {
     // (resizeDocks leaves a dock a pixel short of the height asked, and the panel then
     // scrolls by that pixel: asked for two more.)
     constexpr int kSlack = 2;
-    resizeDocks(
-        {panelDock_, solverDock_},
-        {panelDock_->sizeHint().height() + kSlack, solverDock_->sizeHint().height() + kSlack},
-        Qt::Vertical);
+    const int panel = panelDock_->sizeHint().height() + kSlack;
+    const int solver = solverDock_->sizeHint().height() + kSlack;
+    QList<QDockWidget*> docks{panelDock_, solverDock_};
+    QList<int> heights{panel, solver};
+    // The History is given what is left. Left out, it kept the height it had grown to
+    // (with the window, while the panels were small), and Qt shrank the panels' heights
+    // to make room for it: after a window squeezed to its smallest and grown again, and
+    // Advanced opened, both panels scrolled in a window with room for them.
+    const auto besidePanels = [this](QDockWidget* d) {
+        return d->isVisible() && !d->isFloating() &&
+               dockWidgetArea(d) == dockWidgetArea(panelDock_);
+    };
+    if (historyDock_ && besidePanels(historyDock_) && besidePanels(solverDock_) &&
+        !panelDock_->isFloating() && panelDock_->isVisible()) {
+        const int column = panelDock_->height() + historyDock_->height() + solverDock_->height();
+        docks << historyDock_;
+        heights << std::max(historyDock_->minimumSizeHint().height(), column - panel - solver);
+    }
+    resizeDocks(docks, heights, Qt::Vertical);
 }
 
 void MainWindow::resizeEvent(QResizeEvent* event) {

@@ -134,6 +134,7 @@ class MainWindow : public QMainWindow {
     QActionGroup* languageGroup_ = nullptr;
 
     QString scene_ = QStringLiteral("press");
+    static constexpr int kMinimumWidth = 640, kMinimumHeight = 480;
     bool foldUnderWay_ = false;
     bool settleUnderWay_ = false;
     void setEditUnderWay(bool folding, bool settling);
