@@ -7,7 +7,7 @@
 #                              export thread, the viewport, and the step on several
 #                              threads): what CI runs, to stay within its time
 # Other arguments go to ctest, e.g. `scripts/tsan.sh -R test_editor`
-# (every share of the editor suite: test_editor.1, .2 and, under ThreadSanitizer, .3 and .4).
+# (every share of the editor suite: test_editor.1, .2 and, under ThreadSanitizer, .3).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 targets=()
@@ -15,8 +15,8 @@ ctest_args=()
 for arg in "$@"; do
     if [ "$arg" = "--threads" ]; then
         targets=(--target test_editor test_viewport test_determinism)
-        # Two at a time: the step's worker threads and the editor suite's three shares
-        # first (tests/CMakeLists.txt orders them by COST), the viewport last.
+        # Two at a time, longest first (tests/CMakeLists.txt orders the editor suite's
+        # three shares and the step's worker threads by COST), the viewport last.
         ctest_args+=(-R '^(test_editor\.[0-9]+|test_viewport|test_determinism_threads)$' -j2)
     else
         ctest_args+=("$arg")
