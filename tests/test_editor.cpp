@@ -815,6 +815,11 @@ class TestEditor : public QObject {
     // Numbers are written as the language writes them: a German user read "0.10" in the
     // spin boxes and "0.31× Echtzeit" beside German words.
     void numbersAreWrittenAsTheLanguageWritesThem() {
+        // A floating dock is a window of its own, which the main window's locale does not
+        // reach.
+        auto* dock = window->findChild<QDockWidget*>(QStringLiteral("parameterDock"));
+        QVERIFY(dock);
+        dock->setFloating(true);
         window->panel()->phiSlider()->setValue(55);
         QTRY_COMPARE(window->panel()->phiSpin()->text(), QStringLiteral("0.55"));
         QVERIFY(installLanguage(QStringLiteral("de")));
@@ -825,20 +830,25 @@ class TestEditor : public QObject {
         st.stepSeconds = 14468e-6;
         st.playing = true;
         st.pace = 0.31;
-        st.vertices = 12000; // no thousands separator: "12000", not "12.000"
         readout.show(st);
         QStringList shown;
         for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
         QVERIFY2(shown.contains(QStringLiteral("Schritt 14468 µs · 0,31× Echtzeit")),
                  qPrintable(shown.join(QStringLiteral(" | "))));
-        QVERIFY2(shown.join(QLatin1Char(' ')).contains(QStringLiteral("12000 ")),
-                 qPrintable(shown.join(QStringLiteral(" | "))));
+        // Without thousands separators, which the readouts never had: "1234,56", not
+        // "1.234,56" (a sheet torn apart, or blown up, stretches that far).
+        SolverPanel solver;
+        st.maxStretch = 12.3456;
+        st.rmsStretch = 0.5;
+        solver.showStatus(st);
+        QCOMPARE(solver.stretchLabel()->text(), QStringLiteral("max. 1234,56 %, RMS 50,000 %"));
         settledStatus(*window);
         const QRegularExpression decimalComma(QStringLiteral("\\d,\\d"));
         QTRY_VERIFY(window->solverPanel()->stretchLabel()->text().contains(decimalComma));
         QVERIFY(installLanguage(QStringLiteral("en")));
         QTRY_COMPARE(window->panel()->phiSpin()->text(), QStringLiteral("0.55"));
         QTRY_VERIFY(!window->solverPanel()->stretchLabel()->text().contains(decimalComma));
+        dock->setFloating(false);
     }
 
     // The history names what a step did in plain English: "Pin 1 vertex", "Pin 3

@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QCoreApplication>
+#include <QEvent>
 #include <QLocale>
 #include <QSettings>
 #include <QTranslator>
@@ -29,9 +30,17 @@ bool installLanguage(const QString& code) {
     // Numbers as the language writes them ("0,31× Echtzeit", a spin box's "0,50"), but
     // without thousands separators, which the readouts never had. Before the translator:
     // installing it sends the LanguageChange at which the window says its numbers again.
-    QLocale numbers = found ? locale : QLocale(QLocale::English, QLocale::UnitedStates);
+    // The translation's own language: the system's may differ (a de_DE system whose
+    // preferred UI language is English gets English words, so English digits).
+    QLocale numbers = found && !t->language().isEmpty()
+                          ? QLocale(t->language())
+                          : QLocale(QLocale::English, QLocale::UnitedStates);
     numbers.setNumberOptions(QLocale::OmitGroupSeparator);
     QLocale::setDefault(numbers);
+    // Every window that has no locale of its own takes the new one, floating docks and
+    // dialogs included (QApplication hands it to each top-level widget).
+    QEvent localeChange(QEvent::LocaleChange);
+    QCoreApplication::sendEvent(QCoreApplication::instance(), &localeChange);
     QCoreApplication::installTranslator(t);
     current = t;
     return found || code.isEmpty() || code == QLatin1String("en");

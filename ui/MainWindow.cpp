@@ -605,7 +605,7 @@ void MainWindow::retranslate() {
     ActionTexts::apply(this);
     // The live numbers said again, in the new language and its digits: now, since while
     // paused no snapshot comes to say them.
-    if (readoutClock_.isValid()) showReadouts(readoutShown_);
+    if (readoutClock_.isValid()) showReadouts(sim_->status());
     // The History's steps were named in the language of their time. (QUndoStack hands
     // them out const; they are ours, made with new.)
     for (int i = 0; i < undo_->count(); ++i)
@@ -642,10 +642,7 @@ void MainWindow::nameHistoryStart() {
 }
 
 void MainWindow::changeEvent(QEvent* event) {
-    if (event->type() == QEvent::LanguageChange) {
-        setLocale(QLocale()); // the numbers of the docks' spin boxes (Language.cpp)
-        retranslate();
-    }
+    if (event->type() == QEvent::LanguageChange) retranslate();
     // Back from a modal dialog, the view may get no Enter until the mouse moves.
     if (event->type() == QEvent::ActivationChange && isActiveWindow() && input_)
         input_->showToolUnderCursor();
