@@ -1568,6 +1568,16 @@ class TestEditor : public QObject {
             QTest::qWait(20);
         }
         QCOMPARE(history->height(), dragged);
+        // With the Solver dock closed, the Parameters and the History share the column
+        // the same way after a squeeze.
+        auto* solverDock = window->findChild<QDockWidget*>(QStringLiteral("solverDock"));
+        solverDock->hide();
+        window->resize(640, 480);
+        QTRY_COMPARE(window->size(), QSize(640, 480));
+        window->resize(1280, 1000);
+        QTRY_VERIFY(!scrolls("parameterDock"));
+        solverDock->show();
+        QTRY_VERIFY(!scrolls("parameterDock") && !scrolls("solverDock"));
     }
 
     // A sheet that the computer cannot step as fast as it moves says so in the status

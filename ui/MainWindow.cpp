@@ -571,27 +571,36 @@ void MainWindow::createDocks() {
 // empty. Done again when the window is resized or a panel's contents change their size
 // hint (a section opened, another language), so a dragged splitter lasts until then.
 void MainWindow::fitDocks() {
-    if (!panelDock_ || !solverDock_) return;
+    if (!panelDock_ || !solverDock_ || !historyDock_) return;
     // (resizeDocks leaves a dock a pixel short of the height asked, and the panel then
     // scrolls by that pixel: asked for two more.)
     constexpr int kSlack = 2;
-    const int panel = panelDock_->sizeHint().height() + kSlack;
-    const int solver = solverDock_->sizeHint().height() + kSlack;
-    QList<QDockWidget*> docks{panelDock_, solverDock_};
-    QList<int> heights{panel, solver};
+    // The docks shown one above another in the panels' column (whichever of the two
+    // panels is shown decides where that is).
+    QDockWidget* first = !panelDock_->isHidden() ? panelDock_ : solverDock_;
+    const Qt::DockWidgetArea area = dockWidgetArea(first);
+    const auto inColumn = [&](QDockWidget* d) {
+        return !d->isHidden() && !d->isFloating() && dockWidgetArea(d) == area;
+    };
+    QList<QDockWidget*> docks;
+    QList<int> heights;
+    int column = 0, panels = 0;
+    for (QDockWidget* d : {panelDock_, historyDock_, solverDock_})
+        if (inColumn(d)) column += d->height();
+    for (QDockWidget* d : {panelDock_, solverDock_})
+        if (inColumn(d)) {
+            docks << d;
+            heights << d->sizeHint().height() + kSlack;
+            panels += heights.back();
+        }
+    if (docks.isEmpty()) return;
     // The History is given what is left. Left out, it kept the height it had grown to
     // (with the window, while the panels were small), and Qt shrank the panels' heights
     // to make room for it: after a window squeezed to its smallest and grown again, and
     // Advanced opened, both panels scrolled in a window with room for them.
-    const auto besidePanels = [this](QDockWidget* d) {
-        return d->isVisible() && !d->isFloating() &&
-               dockWidgetArea(d) == dockWidgetArea(panelDock_);
-    };
-    if (historyDock_ && besidePanels(historyDock_) && besidePanels(solverDock_) &&
-        !panelDock_->isFloating() && panelDock_->isVisible()) {
-        const int column = panelDock_->height() + historyDock_->height() + solverDock_->height();
+    if (inColumn(historyDock_)) {
         docks << historyDock_;
-        heights << std::max(historyDock_->minimumSizeHint().height(), column - panel - solver);
+        heights << std::max(historyDock_->minimumSizeHint().height(), column - panels);
     }
     resizeDocks(docks, heights, Qt::Vertical);
 }
