@@ -3,6 +3,7 @@
 #include "OutputFile.h"
 
 #include <QtEndian>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <sstream>
@@ -12,27 +13,43 @@ namespace pf {
 
 namespace {
 
+// ' ' and `value` as printf's "%.<precision>g" or "%.<precision>f" writes it in the C
+// locale, whatever LC_NUMERIC says: QCoreApplication sets the user's, and snprintf under
+// a German one wrote "v 0,12 …", which no reader of OBJ takes.
+void appendNumber(QByteArray& out, double value, std::chars_format format, int precision) {
+    char text[64];
+    const std::to_chars_result r =
+        std::to_chars(text, text + sizeof text, value, format, precision);
+    out += ' ';
+    out.append(text, static_cast<qsizetype>(r.ptr - text));
+}
+
 QByteArray objBytes(const SurfaceMesh& mesh, bool withNormals) {
     const bool withUvs = mesh.uvs.size() == mesh.positions.size();
     QByteArray out;
     out.reserve(static_cast<qsizetype>(mesh.positions.size() * 110 + mesh.triangles.size() * 50));
     out += "# PaperFold sheet surface (Kang & Cho 4.3 subdivision), metres, y up\n";
     if (withUvs) out += "# vt: the material coordinates over the sheet, 0..1\n";
-    char line[160];
+    constexpr auto general = std::chars_format::general, fixed = std::chars_format::fixed;
     for (const Vec3& p : mesh.positions) {
-        std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
-        out += line;
+        out += 'v';
+        for (int k = 0; k < 3; ++k) appendNumber(out, p[k], general, 9);
+        out += '\n';
     }
     if (withUvs)
         for (const Vec2& uv : mesh.uvs) {
-            std::snprintf(line, sizeof line, "vt %.9g %.9g\n", uv.x(), 1.0 - uv.y());
-            out += line;
+            out += "vt";
+            appendNumber(out, uv.x(), general, 9);
+            appendNumber(out, 1.0 - uv.y(), general, 9);
+            out += '\n';
         }
     if (withNormals)
         for (const Vec3& n : mesh.normals) {
-            std::snprintf(line, sizeof line, "vn %.6f %.6f %.6f\n", n.x(), n.y(), n.z());
-            out += line;
+            out += "vn";
+            for (int k = 0; k < 3; ++k) appendNumber(out, n[k], fixed, 6);
+            out += '\n';
         }
+    char line[64];
     // One index serves position, uv and normal alike: "i", "i/i", "i//i" or "i/i/i".
     const char* corner =
         withUvs ? (withNormals ? " %u/%u/%u" : " %u/%u") : (withNormals ? " %u//%u" : " %u");

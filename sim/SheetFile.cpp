@@ -820,12 +820,12 @@ WorldLoad decodeWorld(const QByteArray& bytes) {
     // 23", another "no top-level map".
     constexpr unsigned kCborMap = 5; // major type, the first byte's top three bits
     if (!bytes.isEmpty() && (static_cast<unsigned char>(bytes[0]) >> 5) != kCborMap)
-        return {std::nullopt, QStringLiteral("not a PaperFold sheet: a .paper file begins "
-                                             "otherwise (is it another kind of file?)")};
+        return {std::nullopt, QStringLiteral("not a PaperFold sheet: a sheet begins otherwise "
+                                             "(is it another kind of file?)")};
     QString error;
     const std::optional<QCborValue> root = parseBoundedCbor(bytes, sheetFileBounds(), &error);
     if (!root) return {std::nullopt, error};
-    if (!root->isMap()) // an indefinite-length map's header, say, closed as something else
+    if (!root->isMap()) // the first byte said map; kept should that check ever change
         return {std::nullopt, QStringLiteral("not a PaperFold sheet (no top-level map)")};
     try {
         return {worldFromCbor(root->toMap()), {}};

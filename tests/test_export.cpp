@@ -6,10 +6,15 @@
 #include "Subdivision.h"
 #include "SurfaceExport.h"
 
+#include <QFile>
+#include <QProcess>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
+#include <clocale>
+#include <cstdio>
 #include <tiny_gltf.h>
 #include <tiny_obj_loader.h>
 
@@ -53,6 +58,42 @@ class TestExport : public QObject {
         QCOMPARE(reader.GetShapes()[0].mesh.num_face_vertices.size(), m.triangles.size());
         // Values survive the text format to about 1e-9 m.
         QVERIFY(std::abs(reader.GetAttrib().vertices[3 * 5 + 1] - m.positions[5].y()) < 1e-6);
+    }
+
+    // The numbers are written as OBJ wants them whatever the user's locale: Qt sets the
+    // user's LC_NUMERIC at start, and under a German one snprintf wrote "v 0,12 ...".
+    // The German locale is compiled here (localedef, Debian's `locales`), not assumed.
+    void objNumbersDoNotFollowTheUsersLocale() {
+        QTemporaryDir locales;
+        const QString localedef = QStandardPaths::findExecutable(QStringLiteral("localedef"));
+        if (localedef.isEmpty()) QSKIP("localedef is not installed (Debian's `locales`)");
+        QProcess make;
+        make.start(localedef,
+                   {QStringLiteral("-i"), QStringLiteral("de_DE"), QStringLiteral("-f"),
+                    QStringLiteral("UTF-8"), locales.filePath(QStringLiteral("de_DE.UTF-8"))});
+        QVERIFY(make.waitForFinished(60000));
+        QCOMPARE(make.exitCode(), 0);
+        qputenv("LOCPATH", locales.path().toLocal8Bit());
+        QVERIFY(std::setlocale(LC_NUMERIC, "de_DE.UTF-8"));
+        char shown[16];
+        std::snprintf(shown, sizeof shown, "%.1f", 0.5);
+        const QByteArray german(shown);
+        SurfaceMesh m = crumpledSurface(1);
+        const QString path = dir.filePath(QStringLiteral("german.obj"));
+        const bool written = writeSurface(m, path, MeshFormat::Obj, true, {}, nullptr);
+        std::setlocale(LC_NUMERIC, "C");
+        qunsetenv("LOCPATH");
+        QCOMPARE(german, QByteArray("0,5")); // the locale was in force
+        QVERIFY(written);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        int numbers = 0;
+        for (const QByteArray& line : f.readAll().split('\n')) {
+            if (!line.startsWith('v')) continue;
+            QVERIFY2(!line.contains(','), line.constData());
+            ++numbers;
+        }
+        QCOMPARE(numbers, int(m.positions.size() + m.uvs.size() + m.normals.size()));
     }
 
     void plyReadByAssimp() {

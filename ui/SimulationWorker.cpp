@@ -63,6 +63,8 @@ void SimulationWorker::replaceWorld(const World& world) {
     lastStepSeconds_ = 0.0;
     stepCost_ = 0.0;
     pacer_.restart();
+    sinceTick_.invalidate(); // the time the new sheet took to arrive is not its step's
+
     publish();
     emit worldReplaced();
 }
