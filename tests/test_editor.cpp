@@ -1600,10 +1600,15 @@ class TestEditor : public QObject {
         window->solverPanel()->integratorBox()->setCurrentText(QStringLiteral("backward-euler"));
         window->solverPanel()->stepsPerSecondBox()->setValue(
             window->solverPanel()->stepsPerSecondBox()->maximum());
-        QTRY_VERIFY_WITH_TIMEOUT(step->text().contains(QStringLiteral("× real time")), 10000);
+        // The new sheet's own pace: it is not known until a second of it has passed (the
+        // pacer starts again with a new sheet), and a sanitized build's default sheet,
+        // already behind, left "× real time" on the label for the first of those frames.
+        QTRY_VERIFY_WITH_TIMEOUT(window->simulation()->status().pace <
+                                         StatusReadout::kBehindRealTime &&
+                                     step->text().contains(QStringLiteral("× real time")),
+                                 10000);
         qInfo("%s", qPrintable(step->text()));
         QVERIFY(!step->toolTip().isEmpty());
-        QVERIFY(window->simulation()->status().pace < StatusReadout::kBehindRealTime);
         // Paused, it runs behind nothing, and says it is paused (the toolbar's icon was the
         // only sign, and a user took the break rate of the paper's last second, which a
         // pause holds, for a live one).
