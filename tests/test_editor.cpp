@@ -1606,7 +1606,7 @@ class TestEditor : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(window->simulation()->status().pace <
                                          StatusReadout::kBehindRealTime &&
                                      step->text().contains(QStringLiteral("× real time")),
-                                 10000);
+                                 10000 * PAPERFOLD_TEST_SLOWDOWN);
         qInfo("%s", qPrintable(step->text()));
         QVERIFY(!step->toolTip().isEmpty());
         // Paused, it runs behind nothing, and says it is paused (the toolbar's icon was the
