@@ -13,6 +13,7 @@
 #include <QApplication>
 #include <QCoreApplication>
 #include <QGuiApplication>
+#include <QLocale>
 #include <QTextStream>
 #include <cerrno>
 #include <memory>
@@ -78,6 +79,9 @@ int main(int argc, char* argv[]) {
                                                   : std::make_unique<QCoreApplication>(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("paperfold"));
     QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_STRING));
+    // The commands speak English: the numbers they draw (an image's legend) are written
+    // in C's digits too, not in the user's (QLocale's default follows LANG).
+    QLocale::setDefault(QLocale::c());
     const QStringList args = QCoreApplication::arguments();
     QTextStream out(stdout), err(stderr);
     if (args[1] == QLatin1String("--help") || args[1] == QLatin1String("-h") ||

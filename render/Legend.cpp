@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 #include <QFontMetrics>
+#include <QLocale>
 #include <algorithm>
 #include <vector>
 
@@ -19,29 +20,25 @@ QColor heat(double t) {
 
 } // namespace
 
-void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& options) {
-    struct Bar {
-        QString title;
-        double range;
-        QString unit;
+LegendContent legendContent(const RenderOptions& options) {
+    LegendContent content;
+    const QLocale locale;
+    const auto top = [&](double range, const QString& unit) {
+        return QStringLiteral("≥ %1%2").arg(locale.toString(range, 'g', 3), unit);
     };
-    std::vector<Bar> bars;
     // Eq. 10's P is drawn per growth of an edge's contraction by the reference amount
     // (docs/model.md, "Breaking"), no longer per 1/60 s. A file may carry its own
     // reference; the editor and the command line make none but the default.
     if (options.overlays & OverlayBreakProbability)
-        bars.push_back({QCoreApplication::translate(
-                            "Legend", "Break probability P (Eq. 10, per %1 % more contraction)")
-                            .arg(100.0 * SimParams{}.breakReferenceContraction),
-                        options.probabilityRange, QString()});
+        content.bars.push_back(
+            {QCoreApplication::translate("Legend",
+                                         "Break probability P (Eq. 10, per %1 % more contraction)")
+                 .arg(locale.toString(100.0 * SimParams{}.breakReferenceContraction)),
+             top(options.probabilityRange, QString())});
     if (options.overlays & OverlayStrain)
-        bars.push_back({QCoreApplication::translate("Legend", "Strain |l/l0 - 1|"),
-                        options.strainRange * 100.0, QStringLiteral("%")});
-    struct Swatch {
-        QColor color;
-        QString label;
-    };
-    std::vector<Swatch> swatches;
+        content.bars.push_back({QCoreApplication::translate("Legend", "Strain |l/l0 - 1|"),
+                                top(options.strainRange * 100.0, QStringLiteral("%"))});
+    auto& swatches = content.swatches;
     if (options.overlays & OverlaySpringKinds) {
         swatches.push_back({QColor::fromRgbF(0.10, 0.30, 0.95),
                             QCoreApplication::translate("Legend", "breakable spring")});
@@ -58,6 +55,13 @@ void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& optio
     if (options.overlays & OverlayRecentBreaks)
         swatches.push_back({QColor::fromRgbF(1.0, 0.0, 0.75),
                             QCoreApplication::translate("Legend", "broken in the last second")});
+    return content;
+}
+
+void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& options) {
+    const LegendContent content = legendContent(options);
+    const auto& bars = content.bars;
+    const auto& swatches = content.swatches;
     if (bars.empty() && swatches.empty()) return;
 
     const double scale = std::max(1.0, area.height() / 720.0);
@@ -72,8 +76,9 @@ void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& optio
     const QFontMetrics metrics(font);
     const int swatchW = static_cast<int>(32 * scale);
     int textW = barW + static_cast<int>(110 * scale);
-    for (const Bar& b : bars) textW = std::max(textW, metrics.horizontalAdvance(b.title));
-    for (const Swatch& s : swatches)
+    for (const LegendContent::Bar& b : bars)
+        textW = std::max(textW, metrics.horizontalAdvance(b.title));
+    for (const LegendContent::Swatch& s : swatches)
         textW = std::max(textW, swatchW + metrics.horizontalAdvance(s.label));
     const int width = std::min(textW + pad * 2, area.width() - 2 * pad);
     const QRect box(area.left() + pad, area.bottom() - height - pad, width, height);
@@ -84,7 +89,7 @@ void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& optio
 
     int y = box.top() + pad;
     painter.setPen(QColor(30, 30, 30));
-    for (const Bar& b : bars) {
+    for (const LegendContent::Bar& b : bars) {
         painter.drawText(QRect(box.left() + pad, y, width - 2 * pad, line),
                          Qt::AlignLeft | Qt::AlignVCenter, b.title);
         y += line;
@@ -95,10 +100,10 @@ void drawLegend(QPainter& painter, const QRect& area, const RenderOptions& optio
         painter.drawText(QRect(box.left() + pad, y, barW, line), Qt::AlignLeft | Qt::AlignVCenter,
                          QStringLiteral("0"));
         painter.drawText(QRect(box.left() + pad, y, barW, line), Qt::AlignRight | Qt::AlignVCenter,
-                         QStringLiteral("≥ %1%2").arg(b.range, 0, 'g', 3).arg(b.unit));
+                         b.top);
         y += line;
     }
-    for (const Swatch& s : swatches) {
+    for (const LegendContent::Swatch& s : swatches) {
         painter.fillRect(QRect(box.left() + pad, y + line / 2 - 2, static_cast<int>(24 * scale),
                                static_cast<int>(4 * scale)),
                          s.color);

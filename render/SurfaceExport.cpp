@@ -1,5 +1,6 @@
 #include "SurfaceExport.h"
 
+#include "CLocaleNumber.h"
 #include "OutputFile.h"
 
 #include <QtEndian>
@@ -13,15 +14,10 @@ namespace pf {
 
 namespace {
 
-// ' ' and `value` as printf's "%.<precision>g" or "%.<precision>f" writes it in the C
-// locale, whatever LC_NUMERIC says: QCoreApplication sets the user's, and snprintf under
-// a German one wrote "v 0,12 …", which no reader of OBJ takes.
+// ' ' and `value` in the C locale (cLocaleNumber).
 void appendNumber(QByteArray& out, double value, std::chars_format format, int precision) {
-    char text[64];
-    const std::to_chars_result r =
-        std::to_chars(text, text + sizeof text, value, format, precision);
     out += ' ';
-    out.append(text, static_cast<qsizetype>(r.ptr - text));
+    out += cLocaleNumber(value, format, precision);
 }
 
 QByteArray objBytes(const SurfaceMesh& mesh, bool withNormals) {

@@ -1,5 +1,6 @@
 #include "CrumpleCycles.h"
 
+#include "CLocaleNumber.h"
 #include "CreaseNetwork.h"
 #include "Scenes.h"
 #include "SheetStats.h"
@@ -49,9 +50,8 @@ runCrumpleCycles(World world, int cycles,
         const double end = k * kCrumpleCycleSeconds - 0.5 * sim.world().params.dt;
         while (sim.world().time < end) {
             if (sim.step() != StepStatus::Ok) {
-                report.error = "cycle " + std::to_string(k) +
-                               ": a step diverged at t = " + std::to_string(sim.world().time) +
-                               " s";
+                report.error = "cycle " + std::to_string(k) + ": a step diverged at t = " +
+                               cLocaleNumber(sim.world().time, std::chars_format::fixed, 4) + " s";
                 return report;
             }
         }

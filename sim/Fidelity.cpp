@@ -1,5 +1,6 @@
 #include "Fidelity.h"
 
+#include "CLocaleNumber.h"
 #include "Scenes.h"
 #include "SheetBuilder.h"
 #include "SheetStats.h"
@@ -15,6 +16,11 @@ namespace pf {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+
+// An angle in radians as degrees to two decimals, in the C locale ("19.32").
+std::string degrees(double radians) {
+    return cLocaleNumber(radians * 180.0 / kPi, std::chars_format::fixed, 2);
+}
 
 void applySolver(SimParams& p, const FidelityOptions& o) {
     p.integrator = o.integrator;
@@ -250,11 +256,10 @@ void cantileverChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) 
     for (double overhang : {0.05, 0.10}) {
         const double sim = cantileverAngle(o, m, overhang, o.quick);
         const double peirce = peirceAngle(overhang, c);
-        rows.push_back({"cantilever " + std::to_string(int(std::lround(overhang * 100))) + " cm",
-                        "tip-chord angle " + std::to_string(sim * 180.0 / kPi).substr(0, 5) +
-                            "° vs Peirce " + std::to_string(peirce * 180.0 / kPi).substr(0, 5) +
-                            "°, deviation",
-                        100.0 * std::abs(sim / peirce - 1.0), 10.0, true, "%"});
+        rows.push_back(
+            {"cantilever " + std::to_string(int(std::lround(overhang * 100))) + " cm",
+             "tip-chord angle " + degrees(sim) + "° vs Peirce " + degrees(peirce) + "°, deviation",
+             100.0 * std::abs(sim / peirce - 1.0), 10.0, true, "%"});
     }
     Material card;
     materialPreset("card", card);

@@ -10,12 +10,14 @@
 #include "EditSession.h"
 #include "ImageCompare.h"
 #include "JacobiScene.h"
+#include "Legend.h"
 #include "OffscreenRenderer.h"
 #include "RenderCases.h"
 #include "SceneScript.h"
 #include "Scenes.h"
 
 #include <QDir>
+#include <QLocale>
 #include <QTest>
 
 using namespace pf;
@@ -319,6 +321,30 @@ class TestRender : public QObject {
         QCOMPARE(overlaysFromNames(QStringLiteral("none"), &error).value(), 0u);
         QVERIFY(!overlaysFromNames(QStringLiteral("springs,glitter"), &error));
         QVERIFY(error.contains(QStringLiteral("glitter")));
+    }
+
+    void theLegendWritesNumbersAsTheDefaultLocaleDoes() {
+        // The editor sets the default locale to its translation's language; German read
+        // "≥ 0.05" under a German title. (The command line sets C: test_simulate_cli.)
+        RenderOptions options;
+        options.overlays = OverlayBreakProbability | OverlayStrain;
+        options.probabilityRange = 0.05;
+        options.strainRange = 0.015;
+        const QLocale before;
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        const LegendContent german = legendContent(options);
+        QLocale::setDefault(QLocale::c());
+        const LegendContent c = legendContent(options);
+        QLocale::setDefault(before);
+        QCOMPARE(german.bars.size(), std::size_t(2));
+        QCOMPARE(german.bars[0].top, QStringLiteral("≥ 0,05"));
+        QCOMPARE(german.bars[1].top, QStringLiteral("≥ 1,5%"));
+        QVERIFY2(german.bars[0].title.contains(QStringLiteral("per 0,5 %")),
+                 qPrintable(german.bars[0].title));
+        QCOMPARE(c.bars[0].top, QStringLiteral("≥ 0.05"));
+        QCOMPARE(c.bars[1].top, QStringLiteral("≥ 1.5%"));
+        QVERIFY2(c.bars[0].title.contains(QStringLiteral("per 0.5 %")),
+                 qPrintable(c.bars[0].title));
     }
 
     void cleanupTestCase() { renderer.reset(); }

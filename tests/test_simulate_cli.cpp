@@ -24,7 +24,8 @@ struct Result {
     QByteArray out, err;
 };
 
-Result runPaperfold(QStringList args, bool noDisplay = false) {
+// `environment`: NAME=value settings on top of this process's environment.
+Result runPaperfold(QStringList args, bool noDisplay = false, const QStringList& environment = {}) {
     // A new scene is stepped in the integrator the build can afford unless the test names
     // one: the commands' parsing, files and output are the same for every integrator.
     if (pf::test::kMachineryInJacobi && !args.isEmpty() &&
@@ -38,6 +39,15 @@ Result runPaperfold(QStringList args, bool noDisplay = false) {
         env.remove(QStringLiteral("DISPLAY"));
         env.remove(QStringLiteral("WAYLAND_DISPLAY"));
         env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+        p.setProcessEnvironment(env);
+    }
+    if (!environment.isEmpty()) {
+        QProcessEnvironment env = p.processEnvironment().isEmpty()
+                                      ? QProcessEnvironment::systemEnvironment()
+                                      : p.processEnvironment();
+        for (const QString& setting : environment)
+            env.insert(setting.section(QLatin1Char('='), 0, 0),
+                       setting.section(QLatin1Char('='), 1));
         p.setProcessEnvironment(env);
     }
     p.start(QStringLiteral(PAPERFOLD_EXE), args);
@@ -336,6 +346,24 @@ class TestSimulateCli : public QObject {
         const QImage image(out);
         QCOMPARE(image.size(), QSize(320, 200));
         QVERIFY(QString::fromUtf8(r.out).contains(QStringLiteral("llvmpipe")));
+    }
+
+    void theLegendOfARenderIsInCDigitsWhateverTheLanguage() {
+        // The commands speak English; under LANG=de_DE the legend's numbers followed the
+        // user's locale ("≥ 0,05") once the legend wrote them as the default locale does,
+        // which the editor sets to its translation's language.
+        QTemporaryDir dir;
+        const QStringList shot{"render",    "--scene",           "press", "--size", "320x200",
+                               "--overlay", "probability,strain"};
+        const QString c = dir.filePath(QStringLiteral("c.png"));
+        const QString german = dir.filePath(QStringLiteral("de.png"));
+        Result r = runPaperfold(shot + QStringList{"--output", c}, true,
+                                {"LANG=C.UTF-8", "LC_ALL=C.UTF-8"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        r = runPaperfold(shot + QStringList{"--output", german}, true,
+                         {"LANG=de_DE.UTF-8", "LC_ALL=de_DE.UTF-8", "LANGUAGE=de"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QCOMPARE(QImage(german), QImage(c));
     }
 
     void renderWritesAnImageSequence() {
