@@ -1,6 +1,7 @@
 #include "FoldWatch.h"
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <utility>
 
@@ -53,16 +54,28 @@ void FoldWatch::start(const Sheet& sheet, std::vector<Index> flap, const Vec3& c
     angle_ = angle;
     letGo_.clear();
     for (Index i : flap_) letGo_.push_back(sheet.verts.x[i]);
+    std::vector<std::uint8_t> watched(static_cast<std::size_t>(sheet.verts.size()), 0);
+    for (const std::vector<Index>* group : {&flap_, &left_.vertices})
+        for (Index i : *group)
+            if (i >= 0 && i < sheet.verts.size()) watched[static_cast<std::size_t>(i)] = 1;
+    rest_.clear();
+    restLetGo_.clear();
+    for (Index i = 0; i < sheet.verts.size(); ++i)
+        if (!watched[static_cast<std::size_t>(i)]) {
+            rest_.push_back(i);
+            restLetGo_.push_back(sheet.verts.x[i]);
+        }
     due_ = time + kSeconds;
 }
 
 std::optional<FoldWatch::Reading> FoldWatch::check(const Sheet& sheet, double time) {
     if (flap_.empty() || time < due_) return std::nullopt;
     const std::vector<Index> flap = std::exchange(flap_, {}); // read once
+    const std::vector<Index> rest = std::exchange(rest_, {});
     const LeftOut left = std::exchange(left_, {});
     // Vertices are renumbered only by what cancels the watch (an undo); checked all the
     // same, before any reading, so that a sheet that lost them says nothing at all.
-    for (const std::vector<Index>* group : {&flap, &left.vertices})
+    for (const std::vector<Index>* group : {&flap, &rest, &left.vertices})
         for (Index i : *group)
             if (i >= sheet.verts.size()) return std::nullopt;
     const double folded = angle_ * 180.0 / std::numbers::pi;
@@ -75,8 +88,10 @@ std::optional<FoldWatch::Reading> FoldWatch::check(const Sheet& sheet, double ti
     Reading reading;
     // A fold let go at `angle` can turn back at most that far (to flat), and close on
     // only a little: a turn near a half turn is read within those bounds.
-    if (const auto turn = turnAbout(carried_, flap, letGo_, sheet))
-        reading.turnedBack = within(-*turn, folded + kClosingRoom);
+    if (const auto turn = turnAbout(carried_, flap, letGo_, sheet)) {
+        const double restTurn = turnAbout(carried_, rest, restLetGo_, sheet).value_or(0.0);
+        reading.turnedBack = within(restTurn - *turn, folded + kClosingRoom);
+    }
     // What the carry left out is read vertex by vertex (of a stack, one layer may go
     // round and the next stay), each by its turn about the line since the fold began.
     // The carry took the flap round by a half turn before it opened it back to the

@@ -32,11 +32,16 @@ class FoldWatch {
     using LeftOut = FoldLeftOut;
 
     struct Reading {
-        // How far the flap has turned back about the carry's axis since it was let go, in
-        // degrees (negative: on, further closed; the turn that best carries its vertices'
-        // offsets across the axis), in (angle − 360° + 30°, angle + 30°]. Nothing for a
-        // flap that has no width across the axis (a single row of vertices along the
-        // line), whose turn cannot be read from its own vertices.
+        // How far the flap has turned back about the carry's axis since it was let go,
+        // against the rest of the sheet, in degrees (negative: on, further closed; the
+        // turn that best carries its vertices' offsets across the axis, less the rest's),
+        // in (angle − 360° + 30°, angle + 30°]. Read against the rest because a fold is
+        // the angle between the two: a folded sheet that rolls over as a whole has not
+        // opened, and one whose lower part turned over while the flap lay still has (in
+        // an editor session a stack fell open that way while the status bar said
+        // "Folded."). Where the rest has no width across the axis, the flap's own turn.
+        // Nothing for a flap that has no width across the axis (a single row of vertices
+        // along the line), whose turn cannot be read from its own vertices.
         std::optional<double> turnedBack;
         // The share of the paper on the flap's side (by vertices) that the carry left out
         // and that lies unfolded: each such vertex turned about the line by less than
@@ -54,6 +59,7 @@ class FoldWatch {
     // Another edit came first (the sheet it watched may be gone).
     void cancel() {
         flap_.clear();
+        rest_.clear();
         left_ = {};
     }
     // Once kSeconds have passed, read once; nothing if there is nothing to read.
@@ -62,6 +68,10 @@ class FoldWatch {
   private:
     std::vector<Index> flap_;
     std::vector<Vec3> letGo_;
+    // The rest of the sheet (neither the flap nor paper left out), where it lay at the
+    // let-go.
+    std::vector<Index> rest_;
+    std::vector<Vec3> restLetGo_;
     LeftOut left_;
     Vec3 carried_ = Vec3::UnitX();
     double angle_ = 0.0;

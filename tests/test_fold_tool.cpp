@@ -728,6 +728,44 @@ class TestFoldTool : public QObject {
         QVERIFY(!row.check(sheet, 5.0));
     }
 
+    void theWatchReadsTheFlapAgainstTheRestOfTheSheet() {
+        // A fold is the angle between the flap and the rest: in an editor session a stack
+        // fell open as its lower part turned over under the flap, while the status bar
+        // said "Folded." (the flap itself had hardly turned). A square of 4 vertices on the
+        // desk and a flap of 4 carried over it by a half turn about the x axis.
+        Sheet sheet;
+        const std::vector<Vec2> square{Vec2(0.0, 0.02), Vec2(0.1, 0.02), Vec2(0.0, 0.1),
+                                       Vec2(0.1, 0.1)};
+        const Eigen::AngleAxisd halfTurn(kPi, Vec3::UnitX());
+        for (const Vec2& X : square) // the flap, over the rest
+            sheet.addVertex(halfTurn * Vec3(X.x(), -0.002, X.y()), Vec3::Zero(), 1e-3, X);
+        for (const Vec2& X : square) // the rest, on the desk
+            sheet.addVertex(Vec3(X.x(), 0.0, -X.y()), Vec3::Zero(), 1e-3, Vec2(X.x(), -X.y()));
+        const std::vector<Index> flap{0, 1, 2, 3}, rest{4, 5, 6, 7};
+        const std::vector<Vec3> letGo = sheet.verts.x;
+        const auto turnedBackAfter = [&](double flapDegrees, double restDegrees) {
+            const Eigen::AngleAxisd turnFlap(flapDegrees * kPi / 180.0, Vec3::UnitX());
+            const Eigen::AngleAxisd turnRest(restDegrees * kPi / 180.0, Vec3::UnitX());
+            sheet.verts.x = letGo;
+            FoldWatch watch;
+            watch.start(sheet, flap, Vec3::UnitX(), kPi, 1.0);
+            for (Index i : flap) sheet.verts.x[i] = turnFlap * letGo[i] + Vec3(0.0, 0.3, 0.0);
+            for (Index i : rest) sheet.verts.x[i] = turnRest * letGo[i] + Vec3(0.0, 0.3, 0.0);
+            const auto reading = watch.check(sheet, 1.0 + FoldWatch::kSeconds);
+            return reading && reading->turnedBack ? *reading->turnedBack : -999.0;
+        };
+        // Rolled over as a whole, a quarter turn either way: folded as it was.
+        QVERIFY(std::abs(turnedBackAfter(-90.0, -90.0)) < 1e-9);
+        QVERIFY(std::abs(turnedBackAfter(90.0, 90.0)) < 1e-9);
+        // The rest turned over under the still flap: the sheet lies open.
+        const double open = turnedBackAfter(0.0, 180.0);
+        QVERIFY2(std::abs(open - 180.0) < 1e-9, qPrintable(QString::number(open)));
+        QVERIFY(EditSession::foldNotice(open, std::nullopt));
+        // The flap opened a third of the way while the rest rolled a quarter turn on.
+        const double third = turnedBackAfter(30.0, 90.0);
+        QVERIFY2(std::abs(third - 60.0) < 1e-9, qPrintable(QString::number(third)));
+    }
+
     void theWatchSaysWhatTheCarryLeftBehind() {
         // Of a stack folded twice, a third fold across it carried the upper layers over
         // and left the lower ones lying flat (the carry holds only paper that lies in the
