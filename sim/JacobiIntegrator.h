@@ -12,6 +12,7 @@ class JacobiIntegrator final : public Integrator {
     explicit JacobiIntegrator(bool scalarBlocks) : scalar_(scalarBlocks) {}
     void advance(Sheet& sheet, const SimParams& params) override;
     void lendWorkers(const StepWorkers& workers) override { workers_ = workers; }
+    bool boundsStretch() const override { return false; }
 
   private:
     bool scalar_;

@@ -26,12 +26,24 @@ bool Simulation::setIntegrator(const std::string& name) {
 
 namespace {
 
-bool stateIsSane(const Vertices& V, WorkerPool& pool) {
+bool stateIsSane(const Sheet& sheet, bool boundedStretch, WorkerPool& pool) {
+    const Vertices& V = sheet.verts;
     const double limit2 = kDivergenceRadius * kDivergenceRadius;
     std::atomic<bool> insane{false};
     pool.forRanges(V.size(), [&](Index begin, Index end) {
         for (Index i = begin; i < end; ++i)
             if (!(V.x[i].squaredNorm() < limit2) || !V.v[i].allFinite()) {
+                insane = true;
+                return;
+            }
+    });
+    if (insane || !boundedStretch) return !insane;
+    const Springs& S = sheet.springs;
+    const double stretch2 = kDivergenceStretch * kDivergenceStretch;
+    pool.forRanges(S.size(), [&](Index begin, Index end) {
+        for (Index s = begin; s < end; ++s)
+            if (S.kind[s] == SpringKind::Structural &&
+                (V.x[S.a[s]] - V.x[S.b[s]]).squaredNorm() > stretch2 * S.rest[s] * S.rest[s]) {
                 insane = true;
                 return;
             }
@@ -134,7 +146,8 @@ StepStatus Simulation::step() {
                           pool);
     }
 
-    if (!stateIsSane(sheet.verts, pool)) {
+    // A sheet that slept through the step did not move: its springs are as they were.
+    if (!stateIsSane(sheet, integrator_->boundsStretch() && !integrator_->asleep(), pool)) {
         sheet.verts.x = savedX_;
         sheet.verts.v = savedV_;
         sheet.paper = savedPaper_;

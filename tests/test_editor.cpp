@@ -1213,6 +1213,40 @@ class TestEditor : public QObject {
         QCOMPARE(play->text(), QStringLiteral("&Play"));
     }
 
+    void aBlowUpPausesAndKeepsTheSheetAsItWas() {
+        // A helper chose the symplectic integrator for a crumpled sheet: "The simulation
+        // blew up … the last good state is kept" over a sheet exploded to hundreds of
+        // times its size (the step before the one that went 1 km out), and Play still
+        // showed as on, so the first Space did nothing. A sheet with one vertex lifted
+        // 1 cm blows up in its first symplectic step.
+        window->action("play")->setChecked(false);
+        window->simulation()->sync();
+        World w = *worldOf(*window);
+        w.sheet.verts.x[w.sheet.verts.size() / 2].y() += 0.01;
+        w.params.integrator = "symplectic";
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("lifted.paper"));
+        QVERIFY(saveWorld(w, path, nullptr));
+        QVERIFY(window->openFile(path));
+        lastError.clear();
+        window->action("play")->setChecked(true);
+        QTRY_VERIFY_WITH_TIMEOUT(lastError.contains(QStringLiteral("blew up")), kSignalWaitMs);
+        QAction* play = window->action("play");
+        QVERIFY(!play->isChecked());
+        QCOMPARE(play->text(), QStringLiteral("&Play"));
+        window->simulation()->sync();
+        const auto kept = worldOf(*window);
+        QVERIFY(kept->sheet.verts.x == w.sheet.verts.x); // as it was before the step
+        QVERIFY(computeStats(kept->sheet).maxStretch < 0.5);
+        QTRY_VERIFY(statusBarShows(*window, QStringLiteral("paused")));
+        // One Space plays again (the step blows up again, and pauses again).
+        lastError.clear();
+        play->trigger();
+        QVERIFY(play->isChecked());
+        QTRY_VERIFY_WITH_TIMEOUT(lastError.contains(QStringLiteral("blew up")), kSignalWaitMs);
+        QVERIFY(!play->isChecked());
+    }
+
     void aPushWhilePausedSaysHowToPlay() {
         const QPoint p = viewportCentre(*window);
         moveMouse(window->viewport(), p);

@@ -187,7 +187,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             5000);
     });
     connect(sim_.get(), &SimulationThread::diverged, this, [this](qint64 step) {
-        playing_ = false;
+        // The worker has paused; Play shows it, so that one Space plays again.
+        action("play")->setChecked(false);
         showError(
             tr("The simulation blew up at step %1 and was paused; the last good state is kept. "
                "Try more steps per second or the jacobi integrator.")
