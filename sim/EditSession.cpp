@@ -435,17 +435,45 @@ void EditSession::appendEvents(Stroke& stroke, Index from, Index to) const {
 }
 
 void EditSession::noteRecount(const Stroke& stroke) {
+    noteRecount(stroke, static_cast<int>(stroke.events.size()));
+}
+
+void EditSession::noteRecount(const Stroke& stroke, int events) {
     // A pin's step is named by its vertices, a Settle and a Reset by nothing counted.
     if (stroke.kind != StrokeKind::Push && stroke.kind != StrokeKind::Grab &&
         stroke.kind != StrokeKind::Fold)
         return;
     const int index = static_cast<int>(&stroke - strokes_.data());
-    const int events = static_cast<int>(stroke.events.size());
     auto same = std::ranges::find(recounted_, index, &StrokeEnd::stroke);
     if (same != recounted_.end())
         same->events = events;
     else
         recounted_.push_back({index, events, stroke.kind});
+}
+
+void EditSession::noteSettlingDamage() {
+    // As keepSettlingWithLastStroke would take it now, without taking it: the step's look
+    // is kept only when the next edit comes.
+    if (busy() || redoWaiting() || newestReset()) return;
+    const Stroke* last = newestApplied();
+    if (!last || last->sheet != sheet_ || last->worldAfter) return;
+    const int index = static_cast<int>(last - strokes_.data());
+    SettlingCount& c = settlingCount_;
+    if (c.stroke != index || c.from != last->endEvent) {
+        c = {index, last->endEvent, last->endEvent, 0, static_cast<int>(last->events.size())};
+    }
+    const auto& events = sim_.world().sheet.events;
+    const Index end = static_cast<Index>(events.size());
+    if (end < c.scanned) { // events were taken off the log (a recovery): count afresh
+        c.scanned = c.from;
+        c.active = 0;
+    }
+    for (; c.scanned < end; ++c.scanned)
+        if (events[static_cast<std::size_t>(c.scanned)].active) ++c.active;
+    const int count = static_cast<int>(last->events.size()) + c.active;
+    if (count == c.said) return;
+    c.said = count;
+    noteRecount(*last, count);
 }
 
 std::vector<EditSession::StrokeEnd> EditSession::takeRecounted() {
@@ -731,6 +759,7 @@ StepStatus EditSession::advance(int steps) {
             if (reading->unfoldedShare > 0.0) foldLeftBehind_ = reading->unfoldedShare;
         }
     }
+    noteSettlingDamage();
     return StepStatus::Ok;
 }
 

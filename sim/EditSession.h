@@ -348,6 +348,18 @@ class EditSession {
     void noteWhatAResetSees();
     // A step's count of breaks and hinges changed (takeRecounted).
     void noteRecount(const Stroke& stroke);
+    void noteRecount(const Stroke& stroke, int events);
+    // The damage the sheet makes settling after the newest step joins that step only when
+    // the next edit (or an undo) comes; its count is said as it grows, so that the
+    // History names the step by what its undo would take back now, not a count that was
+    // true at the let-go (a helper read "Fold (82 …)" over a sheet whose undo took back 86).
+    void noteSettlingDamage();
+    struct SettlingCount {
+        int stroke = -1;
+        Index from = 0, scanned = 0; // the events counted: [from, scanned)
+        int active = 0;              // of them, those still in place
+        int said = -1;
+    } settlingCount_;
     // The damage log's length after the last undo or redo (kNone once an edit began):
     // what lies beyond is the sheet settling since, which a redo takes back first.
     Index settledSince_ = kNone;

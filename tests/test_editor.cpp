@@ -510,7 +510,8 @@ class TestEditor : public QObject {
     }
 
     // A push is named with what its undo takes back: what it broke, and what the sheet
-    // broke settling after it until the next edit (it read the count at the release).
+    // broke settling after it until the next edit, as the sheet breaks (it read the
+    // count at the release, and then until the next edit).
     void aPushIsNamedAgainWithWhatItsSheetBrokeSettling() {
         openInJacobi();
         QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
@@ -525,13 +526,15 @@ class TestEditor : public QObject {
         qInfo("the push: %d breaks or hinges at the release, %d more as it settled", atRelease,
               since);
         QVERIFY(since > 0);
-        // (The test loads no translation, so the plural reads "break(s)".)
-        QVERIFY2(
-            window->undoStack()->text(0).startsWith(QStringLiteral("Push (%1 ").arg(atRelease)),
-            qPrintable(window->undoStack()->text(0)));
-        pushAcross(*window); // the next edit begins: the damage is the first push's
+        // Named again as the sheet breaks, before any other edit (it kept the count of the
+        // release until the next one). (The test loads no translation, so the plural reads
+        // "break(s)".)
         QVERIFY(waitForCount(recounted, 1));
         QCOMPARE(recounted.last().at(0).toInt(), 0); // the first push
+        QTRY_VERIFY2(window->undoStack()->text(0).startsWith(
+                         QStringLiteral("Push (%1 ").arg(atRelease + since)),
+                     qPrintable(window->undoStack()->text(0)));
+        pushAcross(*window); // the next edit begins: the damage is the first push's
         QVERIFY2(window->undoStack()->text(0).startsWith(
                      QStringLiteral("Push (%1 ").arg(atRelease + since)),
                  qPrintable(window->undoStack()->text(0)));
