@@ -815,6 +815,21 @@ class TestEditor : public QObject {
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("&File"));
     }
 
+    // The menus name a shortcut's keys in the language: a German user read "Ctrl+O" and
+    // "Space" beside German words (Qt's own translations, qt6-translations-l10n).
+    void shortcutsAreNamedInTheLanguage() {
+        const auto shown = [this](const char* action) {
+            return window->action(action)->shortcut().toString(QKeySequence::NativeText);
+        };
+        QCOMPARE(shown("open"), QStringLiteral("Ctrl+O"));
+        QVERIFY(installLanguage(QStringLiteral("de")));
+        QCOMPARE(shown("open"), QStringLiteral("Strg+O"));
+        QCOMPARE(shown("play"), QStringLiteral("Leertaste"));
+        QVERIFY(installLanguage(QStringLiteral("en")));
+        QCOMPARE(shown("open"), QStringLiteral("Ctrl+O"));
+        QCOMPARE(shown("play"), QStringLiteral("Space"));
+    }
+
     // Numbers are written as the language writes them: a German user read "0.10" in the
     // spin boxes and "0.31× Echtzeit" beside German words.
     void numbersAreWrittenAsTheLanguageWritesThem() {
@@ -1447,6 +1462,41 @@ class TestEditor : public QObject {
         const QImage picture(nextFile);
         QCOMPARE(picture.size(), QSize(320, 200));
         QCOMPARE(bluish(picture), 0);
+    }
+
+    // Export Image offers the size last exported, also in the next session: a user typed
+    // 1280x720 and was offered 1920x1080 again every time.
+    void exportImageOffersTheLastSize() {
+        QTemporaryDir dir;
+        nextFile = dir.filePath(QStringLiteral("sized.png"));
+        QString offered;
+        const auto answer = [&](const QString& typed) {
+            QTimer::singleShot(0, window.get(), [&offered, typed] {
+                auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+                if (!dialog) return;
+                offered = dialog->textValue();
+                if (typed.isEmpty()) {
+                    dialog->reject();
+                    return;
+                }
+                dialog->setTextValue(typed);
+                dialog->accept();
+            });
+        };
+        QSettings().remove(QLatin1String(MainWindow::kImageSizeSetting));
+        answer(QStringLiteral("320x200"));
+        window->action("exportImage")->trigger();
+        QCOMPARE(offered, QStringLiteral("1920x1080")); // the first time
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        QCOMPARE(QImage(nextFile).size(), QSize(320, 200));
+        answer(QString()); // cancelled
+        window->action("exportImage")->trigger();
+        QCOMPARE(offered, QStringLiteral("320x200"));
+        makeWindow(); // the next session
+        offered.clear();
+        answer(QString());
+        window->action("exportImage")->trigger();
+        QCOMPARE(offered, QStringLiteral("320x200"));
     }
 
     // The push tool's sphere comes back under a cursor that has not moved once a modal

@@ -43,11 +43,11 @@ QMessageBox::StandardButton EditorDialogs::askToSave(QWidget* parent) {
                                 QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
 }
 
-QSize EditorDialogs::chooseImageSize(QWidget* parent) {
+QSize EditorDialogs::chooseImageSize(QWidget* parent, const QSize& offered) {
     bool ok = false;
-    const QString text =
-        QInputDialog::getText(parent, tr("Export Image"), tr("Size in pixels (width x height):"),
-                              QLineEdit::Normal, QStringLiteral("1920x1080"), &ok);
+    const QString text = QInputDialog::getText(
+        parent, tr("Export Image"), tr("Size in pixels (width x height):"), QLineEdit::Normal,
+        QStringLiteral("%1x%2").arg(offered.width()).arg(offered.height()), &ok);
     if (!ok) return QSize();
     const QStringList wh = text.split(QLatin1Char('x'));
     if (wh.size() != 2) return QSize(0, 0); // unreadable: the window says what it expects

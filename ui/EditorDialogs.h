@@ -22,8 +22,9 @@ class EditorDialogs {
     static QString chooseFile(QWidget* parent, FileDialog kind, const QString& current);
     static void showError(QWidget* parent, const QString& message);
     static QMessageBox::StandardButton askToSave(QWidget* parent);
-    // "width x height": an invalid QSize when cancelled, 0 x 0 when unreadable.
-    static QSize chooseImageSize(QWidget* parent);
+    // "width x height": an invalid QSize when cancelled, 0 x 0 when unreadable. Offers
+    // `offered`.
+    static QSize chooseImageSize(QWidget* parent, const QSize& offered);
     // An invalid colour when cancelled.
     static QColor chooseColor(QWidget* parent, const QColor& current);
     // The subdivision level for Export Mesh, -1 when cancelled.

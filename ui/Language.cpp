@@ -4,11 +4,37 @@
 #include <QActionGroup>
 #include <QCoreApplication>
 #include <QEvent>
+#include <QLibraryInfo>
 #include <QLocale>
 #include <QSettings>
 #include <QTranslator>
 
 namespace pf {
+
+namespace {
+
+// Qt's own texts in the language: the modifier keys of the menus' shortcuts ("Strg+O",
+// "Leertaste": a German user read "Ctrl+O" and "Space"), the standard dialogs' buttons.
+// Debian's qt6-translations-l10n; without it those stay English.
+void installQtsOwn(const QString& language) {
+    static QTranslator* current = nullptr;
+    if (current) {
+        QCoreApplication::removeTranslator(current);
+        delete current;
+        current = nullptr;
+    }
+    if (language.isEmpty() || language.startsWith(QLatin1String("en"))) return;
+    auto* t = new QTranslator;
+    if (!t->load(QStringLiteral("qtbase_") + language,
+                 QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
+        delete t;
+        return;
+    }
+    QCoreApplication::installTranslator(t);
+    current = t;
+}
+
+} // namespace
 
 bool installLanguage(const QString& code) {
     static QTranslator* current = nullptr;
@@ -41,6 +67,7 @@ bool installLanguage(const QString& code) {
     // dialogs included (QApplication hands it to each top-level widget).
     QEvent localeChange(QEvent::LocaleChange);
     QCoreApplication::sendEvent(QCoreApplication::instance(), &localeChange);
+    installQtsOwn(found ? t->language().section(QLatin1Char('_'), 0, 0) : QString());
     QCoreApplication::installTranslator(t);
     current = t;
     return found || code.isEmpty() || code == QLatin1String("en");

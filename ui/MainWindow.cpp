@@ -100,7 +100,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     chooseFile = [this](FileDialog kind) { return EditorDialogs::chooseFile(this, kind, file_); };
     showError = [this](const QString& message) { EditorDialogs::showError(this, message); };
     askToSave = [this] { return EditorDialogs::askToSave(this); };
-    chooseImageSize = [this] { return EditorDialogs::chooseImageSize(this); };
+    chooseImageSize = [this] {
+        const QSize last = QSettings().value(QLatin1String(kImageSizeSetting)).toSize();
+        return EditorDialogs::chooseImageSize(
+            this,
+            OffscreenRenderer::sizeAllowed(last.width(), last.height()) ? last : QSize(1920, 1080));
+    };
     chooseColor = [this](const QColor& current) {
         return EditorDialogs::chooseColor(this, current);
     };
@@ -900,6 +905,7 @@ void MainWindow::exportImage() {
                      "1920x1080.")
                       .arg(OffscreenRenderer::kMaxSize));
     }
+    QSettings().setValue(QLatin1String(kImageSizeSetting), size);
     const QString path = chooseFileToWrite(FileDialog::ExportImage);
     if (path.isEmpty()) return;
     RenderOptions picture = viewport_->renderOptions();

@@ -47,6 +47,9 @@ class MainWindow : public QMainWindow {
     // QSettings key: true once the first-run hint was dismissed.
     static constexpr const char* kHintSetting = "hints/firstRunDone";
     static constexpr const char* kThreadsSetting = "solver/threads";
+    // The size of the last image exported, offered by the next Export Image (a user typed
+    // 1280x720 and was offered 1920x1080 again every time).
+    static constexpr const char* kImageSizeSetting = "export/imageSize";
     // How often the live numbers (step time, stretch, fps) are redrawn at most.
     static constexpr int kReadoutMs = 250;
     // The cores that step the sheet unless the user chose: all but one, which the view
