@@ -25,6 +25,10 @@ inline constexpr double kDivergenceRadius = 1.0e3;
 // went 1 km out, that was kept as "the last good state". Backward Euler stretched the
 // scenes 1.6 times at most (`press`), xpbd 1.01.
 inline constexpr double kDivergenceStretch = 11.0;
+// ...and by more than this (metres): a crease's finely broken cells, 1-2 mm across, can
+// stretch many times over for a step where a fold crosses them (8,500 % once, before the
+// carry turned in the paper's plane), which is damage, not a blow-up.
+inline constexpr double kDivergenceStretchReach = 0.1;
 
 // Per-vertex data, structure of arrays.
 struct Vertices {

@@ -41,12 +41,15 @@ bool stateIsSane(const Sheet& sheet, bool boundedStretch, WorkerPool& pool) {
     const Springs& S = sheet.springs;
     const double stretch2 = kDivergenceStretch * kDivergenceStretch;
     pool.forRanges(S.size(), [&](Index begin, Index end) {
-        for (Index s = begin; s < end; ++s)
-            if (S.kind[s] == SpringKind::Structural &&
-                (V.x[S.a[s]] - V.x[S.b[s]]).squaredNorm() > stretch2 * S.rest[s] * S.rest[s]) {
+        for (Index s = begin; s < end; ++s) {
+            if (S.kind[s] != SpringKind::Structural) continue;
+            const double length2 = (V.x[S.a[s]] - V.x[S.b[s]]).squaredNorm();
+            if (length2 > stretch2 * S.rest[s] * S.rest[s] &&
+                std::sqrt(length2) > S.rest[s] + kDivergenceStretchReach) {
                 insane = true;
                 return;
             }
+        }
     });
     return !insane;
 }
