@@ -23,7 +23,7 @@ inline constexpr double kDivergenceRadius = 1.0e3;
 // every vertex within reach: one symplectic step of a crumpled office sheet from rest
 // stretched it 6,586 times over 22 m, and it was that state, a step before the one that
 // went 1 km out, that was kept as "the last good state". Backward Euler stretched the
-// scenes 1.6 times at most (`press`), xpbd 1.01.
+// scenes by 161 % at most (`press`), xpbd by 1 %.
 inline constexpr double kDivergenceStretch = 11.0;
 // ...and by more than this (metres): a crease's finely broken cells, 1-2 mm across, can
 // stretch many times over for a step where a fold crosses them (8,500 % once, before the
