@@ -1470,10 +1470,15 @@ class TestEditor : public QObject {
         QTemporaryDir dir;
         nextFile = dir.filePath(QStringLiteral("sized.png"));
         QString offered;
+        // Answers the size dialog once it is up (typed empty: cancels it).
         const auto answer = [&](const QString& typed) {
-            QTimer::singleShot(0, window.get(), [&offered, typed] {
+            auto* poll = new QTimer(window.get());
+            poll->setInterval(20);
+            connect(poll, &QTimer::timeout, poll, [poll, &offered, typed] {
                 auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
                 if (!dialog) return;
+                poll->stop();
+                poll->deleteLater();
                 offered = dialog->textValue();
                 if (typed.isEmpty()) {
                     dialog->reject();
@@ -1482,6 +1487,7 @@ class TestEditor : public QObject {
                 dialog->setTextValue(typed);
                 dialog->accept();
             });
+            poll->start();
         };
         QSettings().remove(QLatin1String(MainWindow::kImageSizeSetting));
         answer(QStringLiteral("320x200"));
