@@ -18,7 +18,8 @@ void addPictureOptions(QCommandLineParser& parser) {
          QStringLiteral("name"), QStringLiteral("iso")},
         {QStringLiteral("camera"),
          QStringLiteral(
-             "Explicit camera: yaw,pitch,distance (degrees, degrees, metres) around the sheet."),
+             "Explicit camera: yaw,pitch,distance (degrees, degrees, metres) around the sheet; "
+             "a pitch that would put the eye under the desk is raised above it."),
          QStringLiteral("y,p,d")},
         {QStringLiteral("overlay"),
          QStringLiteral("Overlays, comma-separated: %1.").arg(overlayNames()),
@@ -82,6 +83,9 @@ OrbitCamera frameCamera(const SheetSnapshot& snap, const QCommandLineParser& par
                                             "(|yaw| ≤ 360), degrees (|pitch| ≤ 89.9) and metres "
                                             "(0.01-20)")};
     }
+    // Never from under the desk, which hides the paper (a pitch of -30° drew the desk's
+    // underside and nothing else): the eye is kept above it as the editor's orbit keeps it.
+    if (snap.groundEnabled) camera.keepAbove(snap.groundHeight);
     // A sheet whose points lie too far out renders as empty sky in single precision.
     if (!camera.target.allFinite() || camera.target.norm() > 1e3 ||
         !std::isfinite(camera.distance) || camera.distance > 1e3)

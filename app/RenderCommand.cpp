@@ -142,6 +142,20 @@ int runRender(const QStringList& arguments) {
         else if (sequence && (f + 1) % std::max(1, count / 10) == 0)
             err << QStringLiteral("frame %1/%2\n").arg(f + 1).arg(count);
         if (!sequence && parser.isSet(QStringLiteral("reference"))) {
+            // Images of different sizes have no pixels to compare: that is the news, not
+            // "100 % of pixels differ" and a difference image never written.
+            if (reference.size() != image.size()) {
+                out << QStringLiteral("compared with %1: it is %2x%3, the image %4x%5\n")
+                           .arg(refPath)
+                           .arg(reference.width())
+                           .arg(reference.height())
+                           .arg(image.width())
+                           .arg(image.height());
+                err << "paperfold: the image does not match " << refPath
+                    << ": the sizes differ (render it with --size " << reference.width() << 'x'
+                    << reference.height() << ")\n";
+                return 4;
+            }
             const ImageDifference d = compareImages(reference, image);
             out << QStringLiteral("compared with %1: %2 % of pixels differ (threshold %3 %)\n")
                        .arg(refPath)

@@ -33,7 +33,8 @@ int runReplay(const QStringList& arguments) {
          QStringLiteral("Render the session as an image sequence (OSMesa, no display): a pattern "
                         "such as frame_%04d.png. The first frame is the start."),
          QStringLiteral("pattern")},
-        {QStringLiteral("every"), QStringLiteral("Steps between frames (default 4)."),
+        {QStringLiteral("every"),
+         QStringLiteral("Steps between frames (default 4); the last frame is the session's end."),
          QStringLiteral("k")},
     });
     addPictureOptions(parser);
@@ -64,8 +65,13 @@ int runReplay(const QStringList& arguments) {
     session.simulation().setThreads(threads);
     QTextStream err(stderr);
 
-    // Frame f shows the sheet after f·every steps; every target is checked before any work.
-    const std::int64_t frameCount = (log.endStep - log.start.stepCount) / every + 1;
+    // Frame f shows the sheet after f·every steps, and a last one the session's end when
+    // --every does not divide its steps (a session of 16,805 steps rendered every 2,000
+    // ended at step 16,000, before the fold it was recorded for); every target is checked
+    // before any work.
+    const std::int64_t total = log.endStep - log.start.stepCount;
+    const bool endApart = total % every != 0;
+    const std::int64_t frameCount = total / every + 1 + (endApart ? 1 : 0);
     std::unique_ptr<OffscreenRenderer> renderer;
     OrbitCamera camera;
     auto writeFrame = [&](std::int64_t f) {
@@ -111,6 +117,7 @@ int runReplay(const QStringList& arguments) {
     timer.start();
     const std::string failure = replay(log, session, afterStep);
     if (!written) return 2;
+    if (frames && endApart && failure.empty() && !writeFrame(frameCount - 1)) return 2;
     const double wall = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
     const long long steps = session.world().stepCount - log.start.stepCount;
     if (parser.isSet(QStringLiteral("save"))) {

@@ -366,6 +366,23 @@ class TestSimulateCli : public QObject {
         QCOMPARE(QImage(german), QImage(c));
     }
 
+    void renderNeverLooksFromUnderTheDesk() {
+        // A pitch of -30° drew the desk's underside and nothing else; the eye is raised
+        // above the desk as the editor's orbit keeps it, so any pitch below that is the
+        // same picture.
+        QTemporaryDir dir;
+        const QStringList shot{"render", "--scene", "press", "--size", "160x100"};
+        const QString under = dir.filePath(QStringLiteral("under.png"));
+        const QString level = dir.filePath(QStringLiteral("level.png"));
+        QCOMPARE(runPaperfold(shot + QStringList{"--camera", "0,-30,0.5", "--output", under}, true)
+                     .exitCode,
+                 0);
+        QCOMPARE(runPaperfold(shot + QStringList{"--camera", "0,0,0.5", "--output", level}, true)
+                     .exitCode,
+                 0);
+        QCOMPARE(QImage(under), QImage(level));
+    }
+
     void renderWritesAnImageSequence() {
         QTemporaryDir dir;
         const Result r = runPaperfold({"render", "--scene", "compress", "--size", "160x120",
@@ -391,6 +408,18 @@ class TestSimulateCli : public QObject {
             shot + QStringList{"--output", dir.filePath("same.png"), "--reference", base}, true);
         QCOMPARE(same.exitCode, 0);
         QVERIFY(QString::fromUtf8(same.out).contains(QStringLiteral("0.000 %")));
+        // A reference of another size: said, exit 4, and no difference image named (it
+        // said "100.000 % of pixels differ" and named one it never wrote).
+        const Result sized =
+            runPaperfold({"render", "--scene", "press", "--steps", "100", "--size", "160x100",
+                          "--output", dir.filePath("small.png"), "--reference", base},
+                         true);
+        QCOMPARE(sized.exitCode, 4);
+        QVERIFY2(sized.err.contains("the sizes differ (render it with --size 240x160)"),
+                 sized.err.constData());
+        QVERIFY(!sized.err.contains("diff.png"));
+        QVERIFY(QString::fromUtf8(sized.out).contains(
+            QStringLiteral("it is 240x160, the image 160x100")));
         // Another view does not: exit 4 and a difference image next to the output.
         const Result other =
             runPaperfold(shot + QStringList{"--view", "top", "--output", dir.filePath("other.png"),
@@ -673,7 +702,8 @@ class TestSimulateCli : public QObject {
         QCOMPARE(
             QJsonDocument::fromJson(frames.out).object()[QStringLiteral("state_hash")].toString(),
             expected);
-        const int count = int(session.world().stepCount) / 10 + 1;
+        const int steps = int(session.world().stepCount);
+        const int count = steps / 10 + 1 + (steps % 10 != 0 ? 1 : 0);
         QCOMPARE(QDir(dir.path()).entryList({QStringLiteral("f_*.png")}).size(), count);
         const QImage first(dir.filePath(QStringLiteral("f_000.png")));
         const QImage last(
@@ -681,6 +711,24 @@ class TestSimulateCli : public QObject {
         QCOMPARE(first.size(), QSize(96, 64));
         QVERIFY(!last.isNull());
         QVERIFY(first != last); // the stroke and the settling changed the picture
+        // Every so many steps that do not divide the session's: the start, the one frame
+        // inside it, and its end (it stopped at the frame inside).
+        QVERIFY(steps > 2);
+        const QString apart = dir.filePath(QStringLiteral("a_%03d.png"));
+        QCOMPARE(runPaperfold({"replay", rec, "--render", apart, "--every",
+                               QString::number(steps - 1), "--size", "96x64"},
+                              true)
+                     .exitCode,
+                 0);
+        QCOMPARE(QDir(dir.path()).entryList({QStringLiteral("a_*.png")}).size(), 3);
+        const QString whole = dir.filePath(QStringLiteral("w_%03d.png"));
+        QCOMPARE(runPaperfold({"replay", rec, "--render", whole, "--every", QString::number(steps),
+                               "--size", "96x64"},
+                              true)
+                     .exitCode,
+                 0);
+        QCOMPARE(QImage(dir.filePath(QStringLiteral("a_002.png"))),
+                 QImage(dir.filePath(QStringLiteral("w_001.png"))));
         QCOMPARE(runPaperfold({"replay", rec, "--render", dir.filePath("no_field.png")}).exitCode,
                  1);
         // PNG data under another name would not open as what the name says.
