@@ -206,9 +206,8 @@ int runBench(const QStringList& arguments) {
     const int resolution = 9;
     const double horizon = 0.25; // seconds of simulated time
     const int repeats = 3;
-    const QDir dir(parser.value(QStringLiteral("output-dir")));
-    if (!dir.exists() && !QDir().mkpath(dir.path()))
-        throw UsageError{QStringLiteral("--output-dir: cannot create '%1'").arg(dir.path())};
+    const QDir dir =
+        requireFolder(QStringLiteral("output-dir"), parser.value(QStringLiteral("output-dir")));
 
     const QString csvPath = dir.filePath(QStringLiteral("bench.csv"));
     auto chartPath = [&](const QString& scene) {

@@ -4,6 +4,7 @@
 #include "OutputFile.h"
 #include "WorkerPool.h"
 
+#include <QFileInfo>
 #include <QStringList>
 #include <QTextStream>
 #include <algorithm>
@@ -76,6 +77,26 @@ std::optional<std::uint64_t> seedOption(const QCommandLineParser& parser, const 
 void requireWritable(const QString& option, const QString& path, const QStringList& inputs) {
     const QString problem = checkOutputPath(path, inputs);
     if (!problem.isEmpty()) throw UsageError{QStringLiteral("--%1: %2").arg(option, problem)};
+}
+
+QDir requireFolder(const QString& option, const QString& path) {
+    const QFileInfo info(path);
+    if (info.exists() && !info.isDir())
+        throw UsageError{QStringLiteral("--%1: '%2' is a file, not a folder").arg(option, path)};
+    QDir dir(path);
+    if (dir.exists()) return dir;
+    // The nearest folder that exists says why a new one cannot be made in it.
+    QFileInfo parent(QFileInfo(info.absoluteFilePath()).absolutePath());
+    while (!parent.exists() && parent.absoluteFilePath() != parent.absolutePath())
+        parent = QFileInfo(parent.absolutePath());
+    if (!QDir().mkpath(path)) {
+        const QString why =
+            !parent.isDir()        ? QStringLiteral("'%1' is not a folder").arg(parent.filePath())
+            : !parent.isWritable() ? QStringLiteral("'%1' is not writable").arg(parent.filePath())
+                                   : QStringLiteral("the system refused");
+        throw UsageError{QStringLiteral("--%1: cannot create '%2': %3").arg(option, path, why)};
+    }
+    return QDir(path);
 }
 
 void requirePngName(const QString& option, const QString& path) {

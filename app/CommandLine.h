@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QCommandLineParser>
+#include <QDir>
 #include <QString>
 #include <QStringList>
 #include <cstdint>
@@ -34,6 +35,10 @@ int threadsOption(const QCommandLineParser& parser);
 // a regular file or a new name in a writable folder, none of `inputs`). Commands call it
 // before long work starts.
 void requireWritable(const QString& option, const QString& path, const QStringList& inputs = {});
+
+// The folder `path`, made if it does not exist; throws UsageError naming `option` and
+// why it cannot be (a file of that name is there, or what stopped the making of it).
+QDir requireFolder(const QString& option, const QString& path);
 
 // Throws UsageError, naming the option, unless `path` ends in .png: what the commands
 // that render write is PNG, and a file named otherwise would not open as what it says.

@@ -99,9 +99,8 @@ int runCrumple(const QStringList& arguments) {
     scene.resolution = static_cast<int>(
         integerOption(parser, QStringLiteral("resolution"), kMinResolution, kMaxResolution)
             .value_or(0));
-    const QDir dir(parser.value(QStringLiteral("output-dir")));
-    if (!dir.exists() && !QDir().mkpath(dir.path()))
-        throw UsageError{QStringLiteral("--output-dir: cannot create '%1'").arg(dir.path())};
+    const QDir dir =
+        requireFolder(QStringLiteral("output-dir"), parser.value(QStringLiteral("output-dir")));
     const QString cyclesPath = dir.filePath(QStringLiteral("crumple_cycles.csv"));
     const QString runsPath = dir.filePath(QStringLiteral("crease_runs.csv"));
     const QString mapsPath = dir.filePath(QStringLiteral("crease_maps.png"));

@@ -146,9 +146,8 @@ int runFigures(const QStringList& arguments) {
         static_cast<int>(integerOption(parser, QStringLiteral("seeds"), 1, 8).value_or(3));
     const int steps =
         static_cast<int>(integerOption(parser, QStringLiteral("steps"), 1, 100'000).value_or(480));
-    const QDir dir(parser.value(QStringLiteral("output-dir")));
-    if (!dir.exists() && !QDir().mkpath(dir.path()))
-        throw UsageError{QStringLiteral("--output-dir: cannot create '%1'").arg(dir.path())};
+    const QDir dir =
+        requireFolder(QStringLiteral("output-dir"), parser.value(QStringLiteral("output-dir")));
     const QString csvPath = dir.filePath(QStringLiteral("figures.csv"));
     requireWritable(QStringLiteral("output-dir"), csvPath);
     for (const Figure& f : figures())

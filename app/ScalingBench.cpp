@@ -169,9 +169,7 @@ int runScalingBench(const ScalingOptions& options) {
     const int warmup = 36, timed = options.quick ? 60 : 144, repeats = 3;
     std::vector<int> threadCounts{1};
     if (options.threads > 1) threadCounts.push_back(options.threads);
-    const QDir dir(options.outputDir);
-    if (!dir.exists() && !QDir().mkpath(dir.path()))
-        throw UsageError{QStringLiteral("--output-dir: cannot create '%1'").arg(dir.path())};
+    const QDir dir = requireFolder(QStringLiteral("output-dir"), options.outputDir);
     const QString csvPath = dir.filePath(QStringLiteral("scaling.csv"));
     const QString pngPath = dir.filePath(QStringLiteral("scaling.png"));
     requireWritable(QStringLiteral("output-dir"), csvPath);

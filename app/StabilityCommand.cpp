@@ -114,9 +114,8 @@ int runStability(const QStringList& arguments) {
                                     1.0 / 960, 1.0 / 1920, 1.0 / 3840, 1.0 / 7680};
     const std::vector<double> scales =
         quick ? std::vector<double>{1, 100, 10000} : std::vector<double>{1, 10, 100, 1000, 10000};
-    const QDir dir(parser.value(QStringLiteral("output-dir")));
-    if (!dir.exists() && !QDir().mkpath(dir.path()))
-        throw UsageError{QStringLiteral("--output-dir: cannot create '%1'").arg(dir.path())};
+    const QDir dir =
+        requireFolder(QStringLiteral("output-dir"), parser.value(QStringLiteral("output-dir")));
     const QString csvPath = dir.filePath(QStringLiteral("stability.csv"));
     auto pngPath = [&](const Method& m) {
         return dir.filePath(QStringLiteral("stability_%1.png").arg(QLatin1String(m.name)));

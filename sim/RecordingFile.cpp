@@ -104,7 +104,11 @@ RecordingLoad decodeRecording(const QByteArray& bytes) {
     if (!parsed->isMap()) return {std::nullopt, QStringLiteral("not a PaperFold recording")};
     const QCborMap root = parsed->toMap();
     auto bad = [](const QString& what) { return RecordingLoad{std::nullopt, what}; };
-    if (root.value(QLatin1String("magic")).toString() != QLatin1String(kRecordingMagic))
+    const QString magic = root.value(QLatin1String("magic")).toString();
+    if (magic == QLatin1String(kSheetFileMagic))
+        return bad(QStringLiteral("a PaperFold sheet, not a recording: open it in the editor, or "
+                                  "with --load"));
+    if (magic != QLatin1String(kRecordingMagic))
         return bad(QStringLiteral("not a PaperFold recording (wrong magic)"));
     const QCborValue version = root.value(QLatin1String("version"));
     if (!version.isInteger() || version.toInteger() != kRecordingVersion)

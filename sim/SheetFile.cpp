@@ -6,6 +6,7 @@
 #include "Integrator.h"
 #include "LittleEndian.h"
 #include "OutputFile.h"
+#include "RecordingFile.h"
 #include "SheetValidation.h"
 
 #include <QCborArray>
@@ -508,7 +509,11 @@ std::uint64_t u64From(const QByteArray& b, qsizetype offset) {
 
 World worldFromCbor(const QCborMap& root) {
     const QString w = QStringLiteral("file");
-    if (textAt(root, "magic", w, 64) != QLatin1String(kSheetFileMagic))
+    const QString magic = textAt(root, "magic", w, 64);
+    if (magic == QLatin1String(kRecordingMagic))
+        fail(QStringLiteral("a PaperFold recording, not a sheet: `paperfold replay` plays it "
+                            "(its --save writes the sheet it ends with)"));
+    if (magic != QLatin1String(kSheetFileMagic))
         fail(QStringLiteral("not a PaperFold sheet (wrong magic)"));
     const qint64 version = integerAt(root, "version", w, 0, 1'000'000);
     if (version != kSheetFileVersion)

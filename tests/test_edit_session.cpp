@@ -1667,7 +1667,8 @@ class TestEditSession : public QObject {
         const EditLog log = session.log();
         const QByteArray good = encodeRecording(log);
         QTest::newRow("empty") << QByteArray() << "";
-        QTest::newRow("a sheet, not a recording") << encodeWorld(log.start) << "wrong magic";
+        QTest::newRow("a sheet, not a recording")
+            << encodeWorld(log.start) << "a PaperFold sheet, not a recording";
         QTest::newRow("truncated") << good.left(good.size() / 2) << "";
         QTest::newRow("unknown command") << withCommandByte(log, 8, 12) << "unknown command";
         QTest::newRow("a fold without its line") << withCommandByte(log, 8, 11) << "no such fold";

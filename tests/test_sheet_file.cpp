@@ -1,6 +1,8 @@
 // .paper files: exact round trip, exact resume, and refusal of every kind of bad file.
 #include "Breaking.h"
+#include "EditSession.h"
 #include "JacobiScene.h"
+#include "RecordingFile.h"
 #include "Scenes.h"
 #include "SheetBuilder.h"
 #include "SheetFile.h"
@@ -528,6 +530,9 @@ class TestSheetFile : public QObject {
             << QByteArray("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16) << "not a PaperFold sheet";
         QTest::newRow("wrong magic")
             << withField({"magic"}, QStringLiteral("PaperFold shoot")) << "magic";
+        // A recording given where a sheet belongs said "wrong magic"; it says what it is.
+        QTest::newRow("a recording")
+            << encodeRecording(EditSession(*makeScene("drape")).log()) << "`paperfold replay`";
         QTest::newRow("wrong version") << withField({"version"}, 99) << "version 99";
         QTest::newRow("version as text")
             << withField({"version"}, QStringLiteral("1")) << "version";

@@ -141,6 +141,13 @@ class TestSimulateCli : public QObject {
             runPaperfold({"crumple", "--output-dir", dir.path(), "--resolution", "2"});
         QCOMPARE(coarse.exitCode, 1);
         QVERIFY2(coarse.err.contains("--resolution"), coarse.err.constData());
+        // A folder that is a file says so (it said only "cannot create").
+        const QString file = dir.filePath(QStringLiteral("crease_maps.png"));
+        for (const char* command : {"crumple", "figures", "stability"}) {
+            const Result onAFile = runPaperfold({command, "--output-dir", file}, true);
+            QCOMPARE(onAFile.exitCode, 1);
+            QVERIFY2(onAFile.err.contains("is a file, not a folder"), onAFile.err.constData());
+        }
     }
 
     void statsJsonHasEveryKey() {

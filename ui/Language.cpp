@@ -13,16 +13,20 @@ namespace pf {
 
 namespace {
 
+// Takes `current` out of the application and deletes it.
+void uninstall(QTranslator*& current) {
+    if (!current) return;
+    QCoreApplication::removeTranslator(current);
+    delete current;
+    current = nullptr;
+}
+
 // Qt's own texts in the language: the modifier keys of the menus' shortcuts ("Strg+O",
 // "Leertaste": a German user read "Ctrl+O" and "Space"), the standard dialogs' buttons.
 // Debian's qt6-translations-l10n; without it those stay English.
 void installQtsOwn(const QString& language) {
     static QTranslator* current = nullptr;
-    if (current) {
-        QCoreApplication::removeTranslator(current);
-        delete current;
-        current = nullptr;
-    }
+    uninstall(current);
     if (language.isEmpty() || language.startsWith(QLatin1String("en"))) return;
     auto* t = new QTranslator;
     if (!t->load(QStringLiteral("qtbase_") + language,
@@ -38,11 +42,7 @@ void installQtsOwn(const QString& language) {
 
 bool installLanguage(const QString& code) {
     static QTranslator* current = nullptr;
-    if (current) {
-        QCoreApplication::removeTranslator(current);
-        delete current;
-        current = nullptr;
-    }
+    uninstall(current);
     const QLocale locale = code.isEmpty() ? QLocale::system() : QLocale(code);
     auto* t = new QTranslator;
     const bool found =
