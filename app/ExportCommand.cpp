@@ -7,6 +7,7 @@
 #include "SurfaceExport.h"
 #include "WorldOptions.h"
 
+#include <QFileInfo>
 #include <QTextStream>
 
 namespace pf::cli {
@@ -39,6 +40,12 @@ int runExport(const QStringList& arguments) {
             QStringLiteral("--output: '%1' does not end in .obj, .ply or .glb").arg(output)};
     QStringList inputs = worldInputs(parser);
     const PaperLook look = lookFromOptions(parser, &inputs);
+    // Only a GLB carries the look; elsewhere it was taken without a word.
+    if (format != MeshFormat::Glb &&
+        (parser.isSet(QStringLiteral("texture")) || parser.isSet(QStringLiteral("paper-color"))))
+        QTextStream(stderr) << "paperfold: note: a ." << QFileInfo(output).suffix().toLower()
+                            << " file carries no paper colour or texture (a .glb does); "
+                               "--paper-color and --texture are left out\n";
     requireWritable(QStringLiteral("output"), output, inputs);
     const int level = static_cast<int>(
         integerOption(parser, QStringLiteral("subdiv"), 0, kMaxSubdivisionLevel).value_or(2));

@@ -309,6 +309,12 @@ class TestSimulateCli : public QObject {
             QCOMPARE(r.exitCode, 0);
             QVERIFY(QFileInfo(out).size() > 1000);
         }
+        // Only a GLB carries the look: elsewhere it is left out, and said (it was silent).
+        const Result plain = runPaperfold(
+            {"export", "--load", sheet, "--output", dir.filePath("t.obj"), "--texture", "grain"});
+        QCOMPARE(plain.exitCode, 0);
+        QVERIFY2(plain.err.contains("a .obj file carries no paper colour or texture"),
+                 plain.err.constData());
         const Result bad = runPaperfold({"export", "--load", sheet, "--output", "x.stl"});
         QCOMPARE(bad.exitCode, 1);
         QVERIFY(QString::fromUtf8(bad.err).contains(QStringLiteral(".obj")));
