@@ -136,6 +136,7 @@ void EditSession::replaceWorld(const World& world) {
     grabbed_ = kNone; // a vertex of the old sheet (the new Simulation holds none)
     strokes_.clear();
     recounted_.clear();
+    settlingCount_ = {}; // its stroke numbers start again
     resetSeenAt_.reset();
     sheet_ = 0;
     // A stroke held across New goes on from the new sheet.
@@ -459,15 +460,13 @@ void EditSession::noteSettlingDamage() {
     if (!last || last->sheet != sheet_ || last->worldAfter) return;
     const int index = static_cast<int>(last - strokes_.data());
     SettlingCount& c = settlingCount_;
-    if (c.stroke != index || c.from != last->endEvent) {
-        c = {index, last->endEvent, last->endEvent, 0, static_cast<int>(last->events.size())};
-    }
     const auto& events = sim_.world().sheet.events;
     const Index end = static_cast<Index>(events.size());
-    if (end < c.scanned) { // events were taken off the log (a recovery): count afresh
-        c.scanned = c.from;
-        c.active = 0;
-    }
+    // Counted afresh for another step, another sheet (a Reset, or its undo), or a log
+    // shorter than what was counted (the log only grows, but a count must not outlive it).
+    if (c.stroke != index || c.sheet != sheet_ || c.from != last->endEvent || end < c.scanned)
+        c = {index,          sheet_, last->endEvent,
+             last->endEvent, 0,      static_cast<int>(last->events.size())};
     for (; c.scanned < end; ++c.scanned)
         if (events[static_cast<std::size_t>(c.scanned)].active) ++c.active;
     const int count = static_cast<int>(last->events.size()) + c.active;
@@ -748,6 +747,7 @@ StepStatus EditSession::advance(int steps) {
         }
         const StepStatus status = settle_ == Settle::Settling ? settleStep() : sim_.step();
         if (status != StepStatus::Ok) {
+            noteSettlingDamage(); // what the good steps before it broke
             record(EditCommand::of(EditCommand::Kind::Diverged));
             // The carry is what blew up, maybe: let the flap go rather than carry it on.
             if (folding()) finishFold(false);

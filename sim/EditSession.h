@@ -355,7 +355,7 @@ class EditSession {
     // true at the let-go (a helper read "Fold (82 …)" over a sheet whose undo took back 86).
     void noteSettlingDamage();
     struct SettlingCount {
-        int stroke = -1;
+        int stroke = -1, sheet = -1;
         Index from = 0, scanned = 0; // the events counted: [from, scanned)
         int active = 0;              // of them, those still in place
         int said = -1;

@@ -29,6 +29,10 @@ inline constexpr double kDivergenceStretch = 11.0;
 // stretch many times over for a step where a fold crosses them (8,500 % once, before the
 // carry turned in the paper's plane), which is damage, not a blow-up.
 inline constexpr double kDivergenceStretchReach = 0.1;
+// ...and more than this many times as long as the step found it: a blow-up grows by
+// orders of magnitude a step (0.19 % to 658,500 % in one), where paper already stretched
+// past the limit (a jacobi sheet handed to another integrator, say) only comes back.
+inline constexpr double kDivergenceGrowth = 2.0;
 
 // Per-vertex data, structure of arrays.
 struct Vertices {

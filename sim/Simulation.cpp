@@ -26,7 +26,9 @@ bool Simulation::setIntegrator(const std::string& name) {
 
 namespace {
 
-bool stateIsSane(const Sheet& sheet, bool boundedStretch, WorkerPool& pool) {
+// `before`: the positions the step began from (the stretch test asks what the step did).
+bool stateIsSane(const Sheet& sheet, const std::vector<Vec3>& before, bool boundedStretch,
+                 WorkerPool& pool) {
     const Vertices& V = sheet.verts;
     const double limit2 = kDivergenceRadius * kDivergenceRadius;
     std::atomic<bool> insane{false};
@@ -45,7 +47,9 @@ bool stateIsSane(const Sheet& sheet, bool boundedStretch, WorkerPool& pool) {
             if (S.kind[s] != SpringKind::Structural) continue;
             const double length2 = (V.x[S.a[s]] - V.x[S.b[s]]).squaredNorm();
             if (length2 > stretch2 * S.rest[s] * S.rest[s] &&
-                std::sqrt(length2) > S.rest[s] + kDivergenceStretchReach) {
+                std::sqrt(length2) > S.rest[s] + kDivergenceStretchReach &&
+                length2 > kDivergenceGrowth * kDivergenceGrowth *
+                              (before[S.a[s]] - before[S.b[s]]).squaredNorm()) {
                 insane = true;
                 return;
             }
@@ -150,7 +154,7 @@ StepStatus Simulation::step() {
     }
 
     // A sheet that slept through the step did not move: its springs are as they were.
-    if (!stateIsSane(sheet, integrator_->boundsStretch() && !integrator_->asleep(), pool)) {
+    if (!stateIsSane(sheet, savedX_, integrator_->boundsStretch() && !slept, pool)) {
         sheet.verts.x = savedX_;
         sheet.verts.v = savedV_;
         sheet.paper = savedPaper_;

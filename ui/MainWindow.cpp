@@ -905,9 +905,9 @@ void MainWindow::exportImage() {
                      "1920x1080.")
                       .arg(OffscreenRenderer::kMaxSize));
     }
-    QSettings().setValue(QLatin1String(kImageSizeSetting), size);
     const QString path = chooseFileToWrite(FileDialog::ExportImage);
     if (path.isEmpty()) return;
+    QSettings().setValue(QLatin1String(kImageSizeSetting), size);
     RenderOptions picture = viewport_->renderOptions();
     picture.pins = false;   // editing marks, not the artwork,
     picture.sphere = false; // as is the tool under the cursor
