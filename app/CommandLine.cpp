@@ -113,6 +113,12 @@ void rejectExtraArguments(const QCommandLineParser& parser, int allowed) {
 
 bool parseCommand(QCommandLineParser& parser, const QStringList& arguments, int positional) {
     if (!parser.parse(arguments)) throw UsageError{parser.errorText()};
+    // Every option takes one value: all but the last one given were dropped without a word
+    // ("--scene press --scene drape" ran drape).
+    const QStringList given = parser.optionNames();
+    for (qsizetype k = 0; k < given.size(); ++k)
+        if (given.indexOf(given[k]) != k)
+            throw UsageError{QStringLiteral("--%1 is given more than once").arg(given[k])};
     if (parser.isSet(QStringLiteral("help"))) {
         QTextStream(stdout) << parser.helpText();
         return false;

@@ -452,6 +452,9 @@ class TestSimulateCli : public QObject {
             << QStringList{"render", "--size", "big", "--output", "a.png"} << "size";
         QTest::newRow("bad view") << QStringList{"render", "--view", "side", "--output", "a.png"}
                                   << "side";
+        QTest::newRow("an option twice")
+            << QStringList{"render", "--scene", "press", "--scene", "drape", "--output", "a.png"}
+            << "--scene is given more than once";
         QTest::newRow("bad camera")
             << QStringList{"render", "--camera", "1,95,1", "--output", "a.png"} << "camera";
         QTest::newRow("bad overlay")
