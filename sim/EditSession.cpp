@@ -754,6 +754,7 @@ StepStatus EditSession::advance(int steps) {
             return status;
         }
         if (folding() && w.time >= foldRelease_) finishFold(true);
+        if (foldWatch_.openingEarly(w.sheet, w.time, kSprangBack)) foldOpening_ = true;
         if (const auto reading = foldWatch_.check(w.sheet, w.time)) {
             foldTurnedBack_ = reading->turnedBack;
             if (reading->unfoldedShare > 0.0) foldLeftBehind_ = reading->unfoldedShare;
@@ -819,6 +820,7 @@ void EditSession::forgetFoldWatch() {
     foldWatch_.cancel();
     foldTurnedBack_.reset();
     foldLeftBehind_.reset();
+    foldOpening_ = false;
 }
 
 std::optional<double> EditSession::takeFoldTurnedBack() {

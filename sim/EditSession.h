@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pf {
@@ -150,6 +151,9 @@ class EditSession {
     // first. A flap that turned back more than kSprangBack did not keep its crease.
     std::optional<double> takeFoldTurnedBack();
     static constexpr double kSprangBack = 45.0; // degrees
+    // Within that second: true once, when the flap has turned back past kSprangBack
+    // (FoldWatch::openingEarly), so that "Folded." does not stand over an open sheet.
+    bool takeFoldOpening() { return std::exchange(foldOpening_, false); }
     // At the same time, the share of the paper on the flap's side that the carry did not
     // hold and that lies unfolded (FoldWatch::Reading::unfolded), once, if some does;
     // kLeftBehindShare of it is a fold that left part of the paper behind.
@@ -374,6 +378,7 @@ class EditSession {
     // (takeFoldTurnedBack, takeFoldLeftBehind); forgotten by any other edit.
     FoldWatch foldWatch_;
     std::optional<double> foldTurnedBack_, foldLeftBehind_;
+    bool foldOpening_ = false;
     double foldAngle_ = 0.0;         // the angle the fold under way was asked for, radians
     FoldWatch::LeftOut foldLeftOut_; // what the carry of the fold under way does not hold
     void forgetFoldWatch();

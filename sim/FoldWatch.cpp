@@ -17,6 +17,13 @@ constexpr double kClosingRoom = 30.0; // degrees
 // Paper the carry left out is read up to this far round (see check).
 constexpr double kLeftOutMost = 270.0; // degrees
 
+// A turn in degrees, read into (top − 360°, top].
+double within(double degrees, double top) {
+    while (degrees > top) degrees -= 360.0;
+    while (degrees <= top - 360.0) degrees += 360.0;
+    return degrees;
+}
+
 // The turn about `axis` (degrees, right-handed) that best carries the offsets of `from`
 // about their centroid to those of the same vertices now, across the axis: the
 // least-squares angle, atan2(Σ n·(p × q), Σ p·q). Nothing if they spread too little
@@ -66,32 +73,45 @@ void FoldWatch::start(const Sheet& sheet, std::vector<Index> flap, const Vec3& c
             restLetGo_.push_back(sheet.verts.x[i]);
         }
     due_ = time + kSeconds;
+    saidOpening_ = false;
+}
+
+std::optional<double> FoldWatch::turnedBack(const Sheet& sheet) const {
+    for (const std::vector<Index>* group : {&flap_, &rest_})
+        for (Index i : *group)
+            if (i >= sheet.verts.size()) return std::nullopt;
+    const auto turn = turnAbout(carried_, flap_, letGo_, sheet);
+    if (!turn) return std::nullopt;
+    const double restTurn = turnAbout(carried_, rest_, restLetGo_, sheet).value_or(0.0);
+    // A fold let go at `angle` can turn back at most that far (to flat), and close on
+    // only a little: a turn near a half turn is read within those bounds.
+    return within(restTurn - *turn, angle_ * 180.0 / std::numbers::pi + kClosingRoom);
+}
+
+bool FoldWatch::openingEarly(const Sheet& sheet, double time, double past) {
+    if (flap_.empty() || saidOpening_ || time >= due_) return false;
+    const auto back = turnedBack(sheet);
+    if (!back || *back <= past) return false;
+    saidOpening_ = true;
+    return true;
 }
 
 std::optional<FoldWatch::Reading> FoldWatch::check(const Sheet& sheet, double time) {
     if (flap_.empty() || time < due_) return std::nullopt;
-    const std::vector<Index> flap = std::exchange(flap_, {}); // read once
-    const std::vector<Index> rest = std::exchange(rest_, {});
-    const LeftOut left = std::exchange(left_, {});
     // Vertices are renumbered only by what cancels the watch (an undo); checked all the
     // same, before any reading, so that a sheet that lost them says nothing at all.
-    for (const std::vector<Index>* group : {&flap, &rest, &left.vertices})
+    for (const std::vector<Index>* group : {&flap_, &rest_, &left_.vertices})
         for (Index i : *group)
-            if (i >= sheet.verts.size()) return std::nullopt;
+            if (i >= sheet.verts.size()) {
+                cancel();
+                return std::nullopt;
+            }
     const double folded = angle_ * 180.0 / std::numbers::pi;
-    // Turns in degrees, read into (top − 360°, top].
-    const auto within = [](double degrees, double top) {
-        while (degrees > top) degrees -= 360.0;
-        while (degrees <= top - 360.0) degrees += 360.0;
-        return degrees;
-    };
     Reading reading;
-    // A fold let go at `angle` can turn back at most that far (to flat), and close on
-    // only a little: a turn near a half turn is read within those bounds.
-    if (const auto turn = turnAbout(carried_, flap, letGo_, sheet)) {
-        const double restTurn = turnAbout(carried_, rest, restLetGo_, sheet).value_or(0.0);
-        reading.turnedBack = within(restTurn - *turn, folded + kClosingRoom);
-    }
+    reading.turnedBack = turnedBack(sheet);
+    const std::vector<Index> flap = std::exchange(flap_, {}); // read once
+    rest_.clear();
+    const LeftOut left = std::exchange(left_, {});
     // What the carry left out is read vertex by vertex (of a stack, one layer may go
     // round and the next stay), each by its turn about the line since the fold began.
     // The carry took the flap round by a half turn before it opened it back to the

@@ -62,10 +62,19 @@ class FoldWatch {
         rest_.clear();
         left_ = {};
     }
+
     // Once kSeconds have passed, read once; nothing if there is nothing to read.
     std::optional<Reading> check(const Sheet& sheet, double time);
+    // Before then: true once, at the first step the flap has turned back more than `past`
+    // degrees. A 90° fold could lie flat again for most of the second while the status bar
+    // still said "Folded."; the reading at kSeconds says how far it went.
+    bool openingEarly(const Sheet& sheet, double time, double past);
 
   private:
+    // How far the flap has turned back against the rest (Reading::turnedBack); nothing if
+    // its turn cannot be read or the sheet lost the vertices.
+    std::optional<double> turnedBack(const Sheet& sheet) const;
+
     std::vector<Index> flap_;
     std::vector<Vec3> letGo_;
     // The rest of the sheet (neither the flap nor paper left out), where it lay at the
@@ -76,6 +85,7 @@ class FoldWatch {
     Vec3 carried_ = Vec3::UnitX();
     double angle_ = 0.0;
     double due_ = 0.0;
+    bool saidOpening_ = false;
 };
 
 } // namespace pf

@@ -2233,15 +2233,28 @@ class TestEditor : public QObject {
         QVERIFY(!from.isNull() && !to.isNull());
         QueuedSignalSpy answered(window->simulation(), &SimulationThread::foldAnswered);
         QueuedSignalSpy opened(window->simulation(), &SimulationThread::foldSprangBack);
+        QueuedSignalSpy opening(window->simulation(), &SimulationThread::foldOpening);
         moveMouse(view, from);
         QTest::mousePress(view, Qt::LeftButton, {}, from);
         moveMouse(view, to, Qt::LeftButton);
         QTest::mouseRelease(view, Qt::LeftButton, {}, to);
         QVERIFY(waitForCount(answered, 1));
         QCOMPARE(answered.last().at(0).toInt(), int(FoldRefusal::None));
+        // Said as it opens, before the reading a second after the let-go.
+        for (int s = 0; s < 1800 && opening.count() == 0; ++s) {
+            window->simulation()->stepOnce();
+            window->simulation()->sync();
+            QCoreApplication::processEvents();
+        }
+        QVERIFY(waitForCount(opening, 1));
+        QCOMPARE(opened.count(), 0);
+        QTRY_VERIFY2(window->statusBar()->currentMessage().startsWith(
+                         QStringLiteral("The fold is opening again")),
+                     qPrintable(window->statusBar()->currentMessage()));
         for (int s = 0; s < 1800; ++s) window->simulation()->stepOnce();
         window->simulation()->sync();
         QVERIFY(waitForCount(opened, 1));
+        QCOMPARE(opening.count(), 1);
         const double degrees = opened.last().at(0).toDouble();
         qInfo("a 60 degree fold opened %.1f degrees again after its let-go", degrees);
         QVERIFY(degrees > EditSession::kSprangBack);

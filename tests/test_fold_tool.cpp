@@ -900,6 +900,42 @@ class TestFoldTool : public QObject {
         saysNothingOfTheFoldFor(s, 480);
     }
 
+    void aFoldThatFallsOpenIsSaidAsItOpens() {
+        // Office paper folded to 60° falls open under the half sheet's weight: it is said
+        // at the step its flap passes kSprangBack (a 90° fold lay flat while "Folded."
+        // stood for most of the second), and the reading a second after the let-go says
+        // how far it went. A fold that holds says neither.
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
+        EditSession s = editorSession(true, "xpbd");
+        QCOMPARE(s.fold(acrossTheMiddle(kPi / 3)), FoldRefusal::None);
+        runUntilLetGo(s);
+        int opening = -1, read = -1;
+        std::optional<double> back;
+        for (int step = 1; step <= 480 && read < 0; ++step) {
+            QCOMPARE(s.advance(1), StepStatus::Ok);
+            if (s.takeFoldOpening()) {
+                QCOMPARE(opening, -1); // once
+                opening = step;
+            }
+            if ((back = s.takeFoldTurnedBack())) read = step;
+        }
+        qInfo("a 60 degree fold was said to open %d steps after its let-go, and read %.0f "
+              "degrees back after %d",
+              opening, back ? *back : 0.0, read);
+        QVERIFY(opening > 0 && read > 0);
+        QVERIFY(opening < read);
+        QVERIFY(back && *back > EditSession::kSprangBack);
+        QVERIFY(!s.takeFoldOpening());
+        // A flat fold across the middle holds: nothing is said while it is watched.
+        EditSession held = editorSession(true, "xpbd");
+        QCOMPARE(held.fold(acrossTheMiddle()), FoldRefusal::None);
+        runUntilLetGo(held);
+        for (int step = 0; step < 480; ++step) {
+            QCOMPARE(held.advance(1), StepStatus::Ok);
+            QVERIFY(!held.takeFoldOpening());
+        }
+    }
+
     void aFoldThatOpenedIsSaidBeforeWhatItLeftBehind() {
         using Kind = EditSession::FoldNotice::Kind;
         const auto notice = EditSession::foldNotice;

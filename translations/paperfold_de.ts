@@ -632,6 +632,10 @@
         <source>Not settled: an edit is under way. Settle once it is over.</source>
         <translation>Nicht beruhigt: Eine Bearbeitung läuft noch. Beruhigen Sie das Blatt, wenn sie vorbei ist.</translation>
     </message>
+    <message>
+        <source>The fold is opening again: its crease does not hold the flap. Edit ▸ Undo unfolds the paper.</source>
+        <translation>Die Faltung öffnet sich wieder: Ihr Knick hält die Lasche nicht. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -627,6 +627,10 @@
         <source>Not settled: an edit is under way. Settle once it is over.</source>
         <translation>静止できません：編集の途中です。終わってから静止させてください。</translation>
     </message>
+    <message>
+        <source>The fold is opening again: its crease does not hold the flap. Edit ▸ Undo unfolds the paper.</source>
+        <translation>折りがまた開いています：折り目がフラップを保てません。編集 ▸ 元に戻す で紙を開きます。</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -627,6 +627,10 @@
         <source>Not settled: an edit is under way. Settle once it is over.</source>
         <translation>안정시킬 수 없습니다: 편집 중입니다. 편집이 끝난 뒤 안정시키세요.</translation>
     </message>
+    <message>
+        <source>The fold is opening again: its crease does not hold the flap. Edit ▸ Undo unfolds the paper.</source>
+        <translation>접힘이 다시 열리고 있습니다: 접힌 자국이 날개를 붙잡지 못합니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -168,6 +168,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                 .arg(degrees, 0, 'f', 0),
             10000);
     });
+    // Said as soon as the flap opens past kSprangBack: a 90° fold lay flat again while
+    // "Folded." stood for most of a second. The reading a second after the let-go says
+    // how far it went.
+    connect(sim_.get(), &SimulationThread::foldOpening, this, [this] {
+        statusBar()->showMessage(
+            tr("The fold is opening again: its crease does not hold the flap. Edit ▸ Undo "
+               "unfolds the paper."),
+            10000);
+    });
     // A third fold across a sheet folded twice carried its upper layers over and left the
     // lower ones lying flat, while the status bar said "Folded."; in an editor session
     // such layers also went round while carried and fell back open at the let-go.

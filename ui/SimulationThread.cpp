@@ -52,6 +52,7 @@ void SimulationThread::forwardWorkerSignals() {
     forward(&SimulationWorker::settleRefused, &SimulationThread::settleRefused);
     forward(&SimulationWorker::foldAnswered, &SimulationThread::foldAnswered);
     forward(&SimulationWorker::foldSprangBack, &SimulationThread::foldSprangBack);
+    forward(&SimulationWorker::foldOpening, &SimulationThread::foldOpening);
     forward(&SimulationWorker::foldLeftPaperBehind, &SimulationThread::foldLeftPaperBehind);
     forward(&SimulationWorker::worldReplaced, &SimulationThread::worldReplaced);
     forward(&SimulationWorker::diverged, &SimulationThread::diverged);

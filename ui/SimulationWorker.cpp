@@ -158,6 +158,7 @@ void SimulationWorker::advance(int steps) {
             announce(finished); // a fold that was let go
     }
     announceRecounts();
+    if (session_.takeFoldOpening()) emit foldOpening();
     if (const auto notice =
             EditSession::foldNotice(session_.takeFoldTurnedBack(), session_.takeFoldLeftBehind())) {
         if (notice->kind == EditSession::FoldNotice::Kind::SprangBack)
