@@ -836,6 +836,8 @@ std::optional<EditSession::FoldNotice> EditSession::foldNotice(std::optional<dou
     // A flap that opened again is the larger news: what it left behind opened with it.
     if (turnedBack && *turnedBack > kSprangBack)
         return FoldNotice{FoldNotice::Kind::SprangBack, *turnedBack};
+    if (turnedBack && *turnedBack < -kSprangBack)
+        return FoldNotice{FoldNotice::Kind::FellShut, -*turnedBack};
     if (leftBehind && *leftBehind >= kLeftBehindShare)
         return FoldNotice{FoldNotice::Kind::LeftPaperBehind, *leftBehind};
     return std::nullopt;

@@ -162,11 +162,14 @@ class EditSession {
     // 0-4 %; folds that left layers lying, 25-41 %.)
     static constexpr double kLeftBehindShare = 0.1;
     // What a user is told of the fold a second after its let-go, from those two readings:
-    // that it opened again (and how far), else that it left part of the paper behind
-    // (and how much), else nothing.
+    // that it opened again (and how far), else that it fell shut, closing more than
+    // kSprangBack past the angle asked (and how far: a 90° fold closed flat under
+    // "Folded."), else that it left part of the paper behind (and how much), else nothing.
     struct FoldNotice {
-        enum class Kind : std::uint8_t { SprangBack, LeftPaperBehind } kind;
-        double value; // degrees turned back, or the share of the flap's side left behind
+        enum class Kind : std::uint8_t { SprangBack, FellShut, LeftPaperBehind } kind;
+        // Degrees turned back, or closed further, or the share of the flap's side left
+        // behind.
+        double value;
     };
     static std::optional<FoldNotice> foldNotice(std::optional<double> turnedBack,
                                                 std::optional<double> leftBehind);

@@ -2273,6 +2273,16 @@ class TestEditor : public QObject {
         QVERIFY(message.contains(QStringLiteral("Undo")));
     }
 
+    // A fold to 90° that fell flat onto the rest said "Folded."; the session's reading is
+    // tested in test_fold_tool, here what the window makes of it.
+    void aFoldThatFellShutSaysSo() {
+        emit window->simulation()->foldFellShut(94.2);
+        const QString message = window->statusBar()->currentMessage();
+        QVERIFY2(message.startsWith(QStringLiteral("The fold fell shut, 94° further than asked")),
+                 qPrintable(message));
+        QVERIFY(message.contains(QStringLiteral("Undo")));
+    }
+
     // A click with the Fold tool draws no line: it is refused with the reason, and
     // nothing changes.
     void aFoldThatCannotBeMadeSaysWhy() {

@@ -936,6 +936,28 @@ class TestFoldTool : public QObject {
         }
     }
 
+    void aFoldThatFallsShutIsSaid() {
+        // The editor's sheet folded to 90° falls flat onto the rest once let go (its
+        // crease cannot hold the flap up); the status bar said "Folded.".
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
+        EditSession s = editorSession(true, "xpbd");
+        QCOMPARE(s.fold(acrossTheMiddle(kPi / 2)), FoldRefusal::None);
+        runUntilLetGo(s);
+        std::optional<double> back;
+        for (int step = 0; step < 480 && !back; ++step) {
+            QCOMPARE(s.advance(1), StepStatus::Ok);
+            QVERIFY(!s.takeFoldOpening()); // it closes, it does not open
+            back = s.takeFoldTurnedBack();
+        }
+        QVERIFY(back);
+        qInfo("a 90 degree fold turned back %.1f degrees a second after its let-go, at %.0f "
+              "degrees",
+              *back, foldAngle(s.world().sheet, length()));
+        const auto notice = EditSession::foldNotice(back, s.takeFoldLeftBehind());
+        QVERIFY(notice && notice->kind == EditSession::FoldNotice::Kind::FellShut);
+        QVERIFY(foldAngle(s.world().sheet, length()) > 150.0);
+    }
+
     void aFoldThatOpenedIsSaidBeforeWhatItLeftBehind() {
         using Kind = EditSession::FoldNotice::Kind;
         const auto notice = EditSession::foldNotice;
@@ -948,6 +970,11 @@ class TestFoldTool : public QObject {
         QVERIFY(n && n->kind == Kind::LeftPaperBehind && n->value == EditSession::kLeftBehindShare);
         n = notice(std::nullopt, 0.3); // a flap too narrow to read, paper left lying
         QVERIFY(n && n->kind == Kind::LeftPaperBehind && n->value == 0.3);
+        // Closed well past the angle asked (a 90° fold fell flat): said, before what it
+        // left behind; a flat fold that closes a few degrees on is not.
+        n = notice(-94.0, 0.5);
+        QVERIFY(n && n->kind == Kind::FellShut && n->value == 94.0);
+        QVERIFY(!notice(-EditSession::kSprangBack, std::nullopt));
     }
 
     void theSessionSaysWhenTheFoldLeftPaperBehind() {

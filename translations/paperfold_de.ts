@@ -636,6 +636,10 @@
         <source>The fold is opening again: its crease does not hold the flap. Edit ▸ Undo unfolds the paper.</source>
         <translation>Die Faltung öffnet sich wieder: Ihr Knick hält die Lasche nicht. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
     </message>
+    <message>
+        <source>The fold fell shut, %1° further than asked, after it was let go: its crease cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.</source>
+        <translation>Die Faltung ist nach dem Loslassen zugefallen, %1° weiter als verlangt: Ihr Knick kann die Lasche in diesem Winkel nicht halten. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -631,6 +631,10 @@
         <source>The fold is opening again: its crease does not hold the flap. Edit ▸ Undo unfolds the paper.</source>
         <translation>折りがまた開いています：折り目がフラップを保てません。編集 ▸ 元に戻す で紙を開きます。</translation>
     </message>
+    <message>
+        <source>The fold fell shut, %1° further than asked, after it was let go: its crease cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.</source>
+        <translation>離した後、折りが指定より %1° 深く閉じました：折り目はその角度でフラップを保てません。編集 ▸ 元に戻す で紙を開きます。</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

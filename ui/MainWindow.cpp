@@ -168,6 +168,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                 .arg(degrees, 0, 'f', 0),
             10000);
     });
+    // A fold to 90° (or 120°, 150°) fell flat onto the rest of the sheet while the status
+    // bar said "Folded.".
+    connect(sim_.get(), &SimulationThread::foldFellShut, this, [this](double degrees) {
+        statusBar()->showMessage(
+            tr("The fold fell shut, %1° further than asked, after it was let go: its crease "
+               "cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.")
+                .arg(degrees, 0, 'f', 0),
+            10000);
+    });
     // Said as soon as the flap opens past kSprangBack: a 90° fold lay flat again while
     // "Folded." stood for most of a second. The reading a second after the let-go says
     // how far it went.

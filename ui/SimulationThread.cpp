@@ -53,6 +53,7 @@ void SimulationThread::forwardWorkerSignals() {
     forward(&SimulationWorker::foldAnswered, &SimulationThread::foldAnswered);
     forward(&SimulationWorker::foldSprangBack, &SimulationThread::foldSprangBack);
     forward(&SimulationWorker::foldOpening, &SimulationThread::foldOpening);
+    forward(&SimulationWorker::foldFellShut, &SimulationThread::foldFellShut);
     forward(&SimulationWorker::foldLeftPaperBehind, &SimulationThread::foldLeftPaperBehind);
     forward(&SimulationWorker::worldReplaced, &SimulationThread::worldReplaced);
     forward(&SimulationWorker::diverged, &SimulationThread::diverged);

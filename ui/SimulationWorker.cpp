@@ -161,10 +161,17 @@ void SimulationWorker::advance(int steps) {
     if (session_.takeFoldOpening()) emit foldOpening();
     if (const auto notice =
             EditSession::foldNotice(session_.takeFoldTurnedBack(), session_.takeFoldLeftBehind())) {
-        if (notice->kind == EditSession::FoldNotice::Kind::SprangBack)
+        switch (notice->kind) {
+        case EditSession::FoldNotice::Kind::SprangBack:
             emit foldSprangBack(notice->value);
-        else
+            break;
+        case EditSession::FoldNotice::Kind::FellShut:
+            emit foldFellShut(notice->value);
+            break;
+        case EditSession::FoldNotice::Kind::LeftPaperBehind:
             emit foldLeftPaperBehind(notice->value);
+            break;
+        }
     }
     if (status == StepStatus::Ok) return;
     playing_ = false;

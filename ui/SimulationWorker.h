@@ -67,6 +67,7 @@ class SimulationWorker : public QObject {
     void settleRefused(bool alreadySettled); // the session did not begin the Settle
     void foldAnswered(int refusal);          // a FoldRefusal
     void foldSprangBack(double degrees);
+    void foldFellShut(double degrees); // closed that much further than the angle asked
     void foldOpening(); // within the second after the let-go (EditSession::takeFoldOpening)
     void foldLeftPaperBehind(double share);
     void worldReplaced();
