@@ -110,9 +110,11 @@ class TestPaperBehaviour : public QObject {
         const double kept = foldAngle(sharp.world().sheet) / deg;
         const double left = foldAngle(gentle.world().sheet) / deg;
         qInfo("after 2 s: the 150° fold keeps %.1f°, the 30° bend keeps %.1f°", kept, left);
-        // The fold keeps what went past the yield: about (190 − 100)/m over the cell,
-        // some 50°; the gentle bend keeps nothing.
-        QVERIFY(kept > 30.0);
+        // The fold keeps what went past the yield, less what springs back: the crease's
+        // elastic part, whose limit falls toward κ_y w_c / s as it yields (a few degrees
+        // to a few tens). The gentle bend keeps nothing. (Kept 40.6° while the plate's sum
+        // stencils yielded only at twice the curvature and pulled the fold back.)
+        QVERIFY(kept > 100.0);
         QVERIFY(left < 5.0);
     }
 
@@ -217,12 +219,13 @@ class TestPaperBehaviour : public QObject {
         QVERIFY2(newton <= 2.0, qPrintable(QString::number(newton)));
     }
 
-    // Tissue's crumple-cycles, saved at 29.05 s as its rim is pulled out flat: in the
-    // second step from there, the projection's Newton iterations wander on a 1.04 mm edge
-    // between vertices of 0.098 and 0.065 mg and end all 48 with its worst projected edge
-    // at 8.3 % (the sheet's largest stretch read 6.76 %, the scorecard's failed row).
-    // Gauss-Seidel sweeps and Newton once more from where they leave it bring that edge to
-    // 0.26 %; the largest stretch over the three steps is then the first step's 0.80 %.
+    // Tissue's crumple-cycles, saved at step 724 (3.02 s) as its rim gathers the sheet. In
+    // the next two steps the projection's Newton iterations wander: they run out, the
+    // Gauss-Seidel sweeps and a second start follow (93 and 96 iterations), and in the
+    // second of them Newton wanders from its second start too and left the sheet at
+    // 3.1 % stretch; the sweeps alone, as long as they take, bring it to 0.76 %
+    // (kStubbornSweeps). (The state this test stepped from before, saved at 29.05 s, no
+    // longer wanders once the plate's sum stencils yield as the others do.)
     void aStepWhereNewtonWandersStillEndsWithinTheBound() {
         QFile packed(QStringLiteral(PAPERFOLD_TEST_DATA "/tissue-newton-stall.paper.qz"));
         QVERIFY(packed.open(QIODevice::ReadOnly));
