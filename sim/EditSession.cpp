@@ -832,12 +832,17 @@ std::optional<double> EditSession::takeFoldLeftBehind() {
 }
 
 std::optional<EditSession::FoldNotice> EditSession::foldNotice(std::optional<double> turnedBack,
-                                                               std::optional<double> leftBehind) {
+                                                               std::optional<double> leftBehind,
+                                                               double askedDegrees) {
     // A flap that opened again is the larger news: what it left behind opened with it.
     if (turnedBack && *turnedBack > kSprangBack)
-        return FoldNotice{FoldNotice::Kind::SprangBack, *turnedBack};
-    if (turnedBack && *turnedBack < -kSprangBack)
-        return FoldNotice{FoldNotice::Kind::FellShut, -*turnedBack};
+        return FoldNotice{FoldNotice::Kind::SprangBack, std::min(*turnedBack, askedDegrees)};
+    if (turnedBack && *turnedBack < -kSprangBack) {
+        const double closed = -*turnedBack;
+        if (askedDegrees + closed >= 180.0 - kShutWithin)
+            return FoldNotice{FoldNotice::Kind::FellShut, askedDegrees};
+        return FoldNotice{FoldNotice::Kind::ClosedFurther, closed};
+    }
     if (leftBehind && *leftBehind >= kLeftBehindShare)
         return FoldNotice{FoldNotice::Kind::LeftPaperBehind, *leftBehind};
     return std::nullopt;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <utility>
@@ -161,18 +162,31 @@ class EditSession {
     // (Mountain folds of a twice-folded stack, whose left-out layers went round, read
     // 0-4 %; folds that left layers lying, 25-41 %.)
     static constexpr double kLeftBehindShare = 0.1;
-    // What a user is told of the fold a second after its let-go, from those two readings:
-    // that it opened again (and how far), else that it fell shut, closing more than
-    // kSprangBack past the angle asked (and how far: a 90° fold closed flat under
-    // "Folded."), else that it left part of the paper behind (and how much), else nothing.
+    // What a user is told of the fold a second after its let-go, from those two readings
+    // and the angle asked (degrees): that it opened again (and how far, at most all of
+    // the angle asked: a 60° fold read 61° back), else that it closed more than
+    // kSprangBack past the angle asked: fell shut if it lies within kShutWithin of flat
+    // (a 90° fold closed flat under "Folded."; "94° further than asked" read as past
+    // flat), else how far it closed (a card folded to 60° stood at 124°, "fell shut"),
+    // else that it left part of the paper behind (and how much), else nothing.
     struct FoldNotice {
-        enum class Kind : std::uint8_t { SprangBack, FellShut, LeftPaperBehind } kind;
-        // Degrees turned back, or closed further, or the share of the flap's side left
-        // behind.
+        enum class Kind : std::uint8_t {
+            SprangBack,
+            FellShut,
+            ClosedFurther,
+            LeftPaperBehind
+        } kind;
+        // Degrees turned back; the angle asked (fell shut); degrees closed further; or the
+        // share of the flap's side left behind.
         double value;
     };
+    static constexpr double kShutWithin = 15.0; // degrees
     static std::optional<FoldNotice> foldNotice(std::optional<double> turnedBack,
-                                                std::optional<double> leftBehind);
+                                                std::optional<double> leftBehind,
+                                                double askedDegrees);
+    // The angle the last fold was asked for, degrees (180 for one resumed from a file,
+    // whose angle is not known).
+    double foldAskedDegrees() const { return foldAngle_ * 180.0 / std::numbers::pi; }
 
     // Undo recovers (§4.2), newest first, every break and hinge since the stroke began —
     // its own and those the sheet made settling after it — and, when all came back, gives

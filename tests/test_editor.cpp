@@ -2276,9 +2276,16 @@ class TestEditor : public QObject {
     // A fold to 90° that fell flat onto the rest said "Folded."; the session's reading is
     // tested in test_fold_tool, here what the window makes of it.
     void aFoldThatFellShutSaysSo() {
-        emit window->simulation()->foldFellShut(94.2);
-        const QString message = window->statusBar()->currentMessage();
-        QVERIFY2(message.startsWith(QStringLiteral("The fold fell shut, 94° further than asked")),
+        emit window->simulation()->foldFellShut(90.0);
+        QString message = window->statusBar()->currentMessage();
+        QVERIFY2(message.startsWith(QStringLiteral("The fold fell shut after it was let go")),
+                 qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("hold the flap up at 90°")), qPrintable(message));
+        QVERIFY(message.contains(QStringLiteral("Undo")));
+        // Card folded to 60° stood at 124°: closed, not shut.
+        emit window->simulation()->foldClosedFurther(64.2);
+        message = window->statusBar()->currentMessage();
+        QVERIFY2(message.startsWith(QStringLiteral("The fold closed 64° further than asked")),
                  qPrintable(message));
         QVERIFY(message.contains(QStringLiteral("Undo")));
     }

@@ -760,7 +760,7 @@ class TestFoldTool : public QObject {
         // The rest turned over under the still flap: the sheet lies open.
         const double open = turnedBackAfter(0.0, 180.0);
         QVERIFY2(std::abs(open - 180.0) < 1e-9, qPrintable(QString::number(open)));
-        QVERIFY(EditSession::foldNotice(open, std::nullopt));
+        QVERIFY(EditSession::foldNotice(open, std::nullopt, 180.0));
         // The flap opened a third of the way while the rest rolled a quarter turn on.
         const double third = turnedBackAfter(30.0, 90.0);
         QVERIFY2(std::abs(third - 60.0) < 1e-9, qPrintable(QString::number(third)));
@@ -977,28 +977,39 @@ class TestFoldTool : public QObject {
         qInfo("a 90 degree fold turned back %.1f degrees a second after its let-go, at %.0f "
               "degrees",
               *back, foldAngle(s.world().sheet, length()));
-        const auto notice = EditSession::foldNotice(back, s.takeFoldLeftBehind());
+        QCOMPARE(s.foldAskedDegrees(), 90.0);
+        const auto notice = EditSession::foldNotice(back, s.takeFoldLeftBehind(), 90.0);
         QVERIFY(notice && notice->kind == EditSession::FoldNotice::Kind::FellShut);
+        QCOMPARE(notice->value, 90.0); // the angle it could not hold
         QVERIFY(foldAngle(s.world().sheet, length()) > 150.0);
     }
 
     void aFoldThatOpenedIsSaidBeforeWhatItLeftBehind() {
         using Kind = EditSession::FoldNotice::Kind;
         const auto notice = EditSession::foldNotice;
-        QVERIFY(!notice(std::nullopt, std::nullopt));
-        QVERIFY(!notice(-3.0, std::nullopt)); // held, nothing left out
-        QVERIFY(!notice(EditSession::kSprangBack, 0.5 * EditSession::kLeftBehindShare));
-        auto n = notice(120.0, 0.4); // opened, and what it left behind with it
+        QVERIFY(!notice(std::nullopt, std::nullopt, 180.0));
+        QVERIFY(!notice(-3.0, std::nullopt, 180.0)); // held, nothing left out
+        QVERIFY(!notice(EditSession::kSprangBack, 0.5 * EditSession::kLeftBehindShare, 180.0));
+        auto n = notice(120.0, 0.4, 180.0); // opened, and what it left behind with it
         QVERIFY(n && n->kind == Kind::SprangBack && n->value == 120.0);
-        n = notice(30.0, EditSession::kLeftBehindShare); // held, a tenth left lying
+        // A flap cannot open more than it was folded: a 60° fold read 61° back.
+        n = notice(61.0, std::nullopt, 60.0);
+        QVERIFY(n && n->kind == Kind::SprangBack && n->value == 60.0);
+        n = notice(30.0, EditSession::kLeftBehindShare, 180.0); // held, a tenth left lying
         QVERIFY(n && n->kind == Kind::LeftPaperBehind && n->value == EditSession::kLeftBehindShare);
-        n = notice(std::nullopt, 0.3); // a flap too narrow to read, paper left lying
+        n = notice(std::nullopt, 0.3, 180.0); // a flap too narrow to read, paper left lying
         QVERIFY(n && n->kind == Kind::LeftPaperBehind && n->value == 0.3);
-        // Closed well past the angle asked (a 90° fold fell flat): said, before what it
-        // left behind; a flat fold that closes a few degrees on is not.
-        n = notice(-94.0, 0.5);
-        QVERIFY(n && n->kind == Kind::FellShut && n->value == 94.0);
-        QVERIFY(!notice(-EditSession::kSprangBack, std::nullopt));
+        // Closed well past the angle asked, to within kShutWithin of flat (a 90° fold fell
+        // flat, read 94° on): it fell shut, from the angle asked, said before what it left
+        // behind; a flat fold that closes a few degrees on is not said.
+        n = notice(-94.0, 0.5, 90.0);
+        QVERIFY(n && n->kind == Kind::FellShut && n->value == 90.0);
+        n = notice(-(180.0 - EditSession::kShutWithin - 90.0), std::nullopt, 90.0);
+        QVERIFY(n && n->kind == Kind::FellShut);
+        QVERIFY(!notice(-EditSession::kSprangBack, std::nullopt, 180.0));
+        // Closed far, but not shut (card folded to 60° stood at 124°): how far it closed.
+        n = notice(-64.0, std::nullopt, 60.0);
+        QVERIFY(n && n->kind == Kind::ClosedFurther && n->value == 64.0);
     }
 
     void theSessionSaysWhenTheFoldLeftPaperBehind() {

@@ -637,8 +637,12 @@
         <translation>Die Faltung öffnet sich wieder: Ihr Knick hält die Lasche nicht. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
     </message>
     <message>
-        <source>The fold fell shut, %1° further than asked, after it was let go: its crease cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.</source>
-        <translation>Die Faltung ist nach dem Loslassen zugefallen, %1° weiter als verlangt: Ihr Knick kann die Lasche in diesem Winkel nicht halten. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
+        <source>The fold fell shut after it was let go: its crease cannot hold the flap up at %1°. Edit ▸ Undo unfolds the paper.</source>
+        <translation>Die Faltung ist nach dem Loslassen zugefallen: Ihr Knick kann die Lasche bei %1° nicht aufrecht halten. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
+    </message>
+    <message>
+        <source>The fold closed %1° further than asked after it was let go: its crease cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.</source>
+        <translation>Die Faltung hat sich nach dem Loslassen %1° weiter geschlossen als verlangt: Ihr Knick kann die Lasche in diesem Winkel nicht halten. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
     </message>
 </context>
 <context>

@@ -632,7 +632,11 @@
         <translation>折りがまた開いています：折り目がフラップを保てません。編集 ▸ 元に戻す で紙を開きます。</translation>
     </message>
     <message>
-        <source>The fold fell shut, %1° further than asked, after it was let go: its crease cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.</source>
+        <source>The fold fell shut after it was let go: its crease cannot hold the flap up at %1°. Edit ▸ Undo unfolds the paper.</source>
+        <translation>離した後、折りが閉じてしまいました：折り目は %1° でフラップを支えられません。編集 ▸ 元に戻す で紙を開きます。</translation>
+    </message>
+    <message>
+        <source>The fold closed %1° further than asked after it was let go: its crease cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.</source>
         <translation>離した後、折りが指定より %1° 深く閉じました：折り目はその角度でフラップを保てません。編集 ▸ 元に戻す で紙を開きます。</translation>
     </message>
 </context>

@@ -632,7 +632,11 @@
         <translation>접힘이 다시 열리고 있습니다: 접힌 자국이 날개를 붙잡지 못합니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
     </message>
     <message>
-        <source>The fold fell shut, %1° further than asked, after it was let go: its crease cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.</source>
+        <source>The fold fell shut after it was let go: its crease cannot hold the flap up at %1°. Edit ▸ Undo unfolds the paper.</source>
+        <translation>놓은 뒤 접힘이 닫혀 버렸습니다: 접힌 자국이 %1°에서 날개를 세워 두지 못합니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
+    </message>
+    <message>
+        <source>The fold closed %1° further than asked after it was let go: its crease cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.</source>
         <translation>놓은 뒤 접힘이 요청보다 %1° 더 닫혔습니다: 접힌 자국이 그 각도에서 날개를 붙잡지 못합니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
     </message>
 </context>

@@ -170,10 +170,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     // A fold to 90° (or 120°, 150°) fell flat onto the rest of the sheet while the status
     // bar said "Folded.".
-    connect(sim_.get(), &SimulationThread::foldFellShut, this, [this](double degrees) {
+    connect(sim_.get(), &SimulationThread::foldFellShut, this, [this](double asked) {
         statusBar()->showMessage(
-            tr("The fold fell shut, %1° further than asked, after it was let go: its crease "
-               "cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.")
+            tr("The fold fell shut after it was let go: its crease cannot hold the flap up at "
+               "%1°. Edit ▸ Undo unfolds the paper.")
+                .arg(asked, 0, 'f', 0),
+            10000);
+    });
+    // Card folded to 60° stood at 124°, its base lifted: closed, not shut.
+    connect(sim_.get(), &SimulationThread::foldClosedFurther, this, [this](double degrees) {
+        statusBar()->showMessage(
+            tr("The fold closed %1° further than asked after it was let go: its crease cannot "
+               "hold the flap at that angle. Edit ▸ Undo unfolds the paper.")
                 .arg(degrees, 0, 'f', 0),
             10000);
     });

@@ -54,6 +54,7 @@ void SimulationThread::forwardWorkerSignals() {
     forward(&SimulationWorker::foldSprangBack, &SimulationThread::foldSprangBack);
     forward(&SimulationWorker::foldOpening, &SimulationThread::foldOpening);
     forward(&SimulationWorker::foldFellShut, &SimulationThread::foldFellShut);
+    forward(&SimulationWorker::foldClosedFurther, &SimulationThread::foldClosedFurther);
     forward(&SimulationWorker::foldLeftPaperBehind, &SimulationThread::foldLeftPaperBehind);
     forward(&SimulationWorker::worldReplaced, &SimulationThread::worldReplaced);
     forward(&SimulationWorker::diverged, &SimulationThread::diverged);

@@ -101,7 +101,8 @@ class SimulationThread : public QObject {
     // A second after a fold was let go its flap had turned back this far, past
     // EditSession::kSprangBack: the crease did not keep it.
     void foldSprangBack(double degrees);
-    void foldFellShut(double degrees); // closed that much further than the angle asked
+    void foldFellShut(double asked);        // closed flat from a fold to that angle
+    void foldClosedFurther(double degrees); // closed that much past the angle asked, not flat
     void foldOpening();
     // At the same time, unless the flap sprang back: this share (0..1) of the paper on the
     // flap's side, at least EditSession::kLeftBehindShare, was not held by the carry and lies

@@ -160,13 +160,17 @@ void SimulationWorker::advance(int steps) {
     announceRecounts();
     if (session_.takeFoldOpening()) emit foldOpening();
     if (const auto notice =
-            EditSession::foldNotice(session_.takeFoldTurnedBack(), session_.takeFoldLeftBehind())) {
+            EditSession::foldNotice(session_.takeFoldTurnedBack(), session_.takeFoldLeftBehind(),
+                                    session_.foldAskedDegrees())) {
         switch (notice->kind) {
         case EditSession::FoldNotice::Kind::SprangBack:
             emit foldSprangBack(notice->value);
             break;
         case EditSession::FoldNotice::Kind::FellShut:
             emit foldFellShut(notice->value);
+            break;
+        case EditSession::FoldNotice::Kind::ClosedFurther:
+            emit foldClosedFurther(notice->value);
             break;
         case EditSession::FoldNotice::Kind::LeftPaperBehind:
             emit foldLeftPaperBehind(notice->value);

@@ -67,7 +67,8 @@ class SimulationWorker : public QObject {
     void settleRefused(bool alreadySettled); // the session did not begin the Settle
     void foldAnswered(int refusal);          // a FoldRefusal
     void foldSprangBack(double degrees);
-    void foldFellShut(double degrees); // closed that much further than the angle asked
+    void foldFellShut(double asked);        // closed flat from a fold to that angle
+    void foldClosedFurther(double degrees); // closed that much past the angle asked, not flat
     void foldOpening(); // within the second after the let-go (EditSession::takeFoldOpening)
     void foldLeftPaperBehind(double share);
     void worldReplaced();
