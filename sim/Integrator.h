@@ -41,9 +41,9 @@ class Integrator {
     virtual bool asleep() const { return false; }
     // True if a structural spring stretched kDivergenceStretch times means the step blew
     // up. The paper's Jacobi (any sweeps, 3×3 or scalar blocks) is a truncated iteration
-    // whose stretch has no such
-    // bound (11,350 % in `drop` at resolution 60, 1,383 % in `compress` at 90, and it goes
-    // on without blowing up): for it only positions beyond kDivergenceRadius count.
+    // whose stretch has no such bound (11,350 % in `drop` at resolution 60, 1,383 % in
+    // `compress` at 90, and it goes on without blowing up): for it only positions beyond
+    // kDivergenceRadius count.
     virtual bool boundsStretch() const { return true; }
 };
 
