@@ -187,42 +187,46 @@ void momentumCheck(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
         {"momentum thrown", "linear momentum drift per second", 100.0 * drift, 0.1, true, "%"});
 }
 
-// A strip 2.5 cm wide clamped on a table, `overhang` of it sticking out; returns the
-// tip-chord angle at rest (radians).
-double cantileverAngle(const FidelityOptions& o, const Material& material, double overhang,
-                       bool quick) {
+// A strip 2.5 cm wide of `material`, `free` of it beyond a 2 cm clamp (pinned), in cells
+// of `cell`, lying flat 10 cm up; no breaks or hinges.
+constexpr double kStripWidth = 0.025, kStripClamp = 0.02;
+World clampedStrip(const FidelityOptions& o, const Material& material, double free, double cell,
+                   const char* scene) {
     SheetSpec spec;
-    spec.width = 0.025;
-    const double clamped = 0.02;
-    spec.length = clamped + overhang;
-    const double cell = 0.0025;
-    spec.columns = static_cast<int>(std::lround(0.025 / cell)) + 1;
+    spec.width = kStripWidth;
+    spec.length = kStripClamp + free;
+    spec.columns = static_cast<int>(std::lround(kStripWidth / cell)) + 1;
     spec.rows = static_cast<int>(std::lround(spec.length / cell)) + 1;
     spec.height = 0.1;
     spec.density = material.arealDensity;
     World w;
-    w.scene = "cantilever";
+    w.scene = scene;
     w.sheet = buildRectangleSheet(spec);
     w.groundEnabled = false;
     applySolver(w.params, o);
     w.params.breaking = false;
     w.params.hinges = false;
     w.params.material = material;
-    const double edgeZ = -0.5 * spec.length + clamped;
     PinGroup clamp;
     for (Index i = 0; i < w.sheet.verts.size(); ++i)
-        if (w.sheet.verts.X[i].y() <= edgeZ + 1e-9) {
+        if (w.sheet.verts.X[i].y() + 0.5 * spec.length <= kStripClamp + 1e-9) {
             clamp.vertices.push_back(i);
             w.sheet.verts.pinned[i] = 1;
         }
     w.script.pins.push_back(clamp);
-    // The load comes on without a swing, as in the standard test, where the strip is
-    // slid over the edge at 2 mm/s (ASTM D1388; some 50 s for 10 cm) and its curvature
-    // only grows. Here gravity rises smoothly to g over `ramp` on the whole overhang,
-    // then holds: tissue's 10 cm strip went at most 0.4° past where it came to rest.
-    // Let go flat, the strip swung down with no air to slow it, and tissue passed its
-    // yield curvature at the clamp in that first swing and set at 73.6° where Peirce
-    // says 60.5° (docs/material.md, "Cantilever").
+    return w;
+}
+
+// Runs a clamped strip while its weight comes on and settles; returns the chord from the
+// clamp's edge (the last pinned row) to the tip (the last row) at the end.
+// The load comes on without a swing, as in the standard cantilever test, where the strip
+// is slid over the edge at 2 mm/s (ASTM D1388; some 50 s for 10 cm) and its curvature
+// only grows. Here gravity rises smoothly to g over `ramp` on the whole strip, then
+// holds: tissue's 10 cm strip went at most 0.4° past where it came to rest. Let go flat,
+// the strip swung down with no air to slow it, and tissue passed its yield curvature at
+// the clamp in that first swing and set at 73.6° where Peirce says 60.5°
+// (docs/material.md, "Cantilever").
+Vec3 chordUnderWeight(const World& w, bool quick) {
     const double ramp = quick ? 1.5 : 2.0;
     const double g = w.params.gravity;
     Simulation sim(w);
@@ -233,19 +237,32 @@ double cantileverAngle(const FidelityOptions& o, const Material& material, doubl
         if (sim.step() != StepStatus::Ok) break;
     }
     const Sheet& s = sim.world().sheet;
+    double edgeRow = -std::numeric_limits<double>::infinity(), tipRow = edgeRow;
+    for (Index i = 0; i < s.verts.size(); ++i) {
+        tipRow = std::max(tipRow, s.verts.X[i].y());
+        if (s.verts.pinned[i]) edgeRow = std::max(edgeRow, s.verts.X[i].y());
+    }
     Vec3 tip = Vec3::Zero(), edge = Vec3::Zero();
     int nt = 0, ne = 0;
     for (Index i = 0; i < s.verts.size(); ++i) {
-        if (s.verts.X[i].y() >= 0.5 * spec.length - 1e-9) {
+        if (s.verts.X[i].y() >= tipRow - 1e-9) {
             tip += s.verts.x[i];
             ++nt;
         }
-        if (std::abs(s.verts.X[i].y() - edgeZ) < 1e-9) {
+        if (std::abs(s.verts.X[i].y() - edgeRow) < 1e-9) {
             edge += s.verts.x[i];
             ++ne;
         }
     }
-    const Vec3 chord = tip / nt - edge / ne;
+    return tip / nt - edge / ne;
+}
+
+// The strip on a table, `overhang` of it sticking out: the tip-chord angle at rest
+// (radians).
+double cantileverAngle(const FidelityOptions& o, const Material& material, double overhang,
+                       bool quick) {
+    const Vec3 chord =
+        chordUnderWeight(clampedStrip(o, material, overhang, 0.0025, "cantilever"), quick);
     return std::atan2(-chord.y(), chord.z());
 }
 
@@ -267,6 +284,57 @@ void cantileverChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) 
     const double stiffer = cantileverAngle(o, card, 0.10, o.quick);
     rows.push_back({"cantilever card vs " + m.name, "10 cm droop of card / of this material",
                     stiffer / office, 1.0, true, "×"});
+}
+
+// Greenhill's column: a strip standing upright, clamped at its foot, buckles under its
+// own weight once it is taller than 1.986 (D / ρg)^(1/3) (Greenhill 1881; Timoshenko &
+// Gere, "Theory of Elastic Stability", §2.9). Below that, a strip that leans a little
+// leans further under its weight, the more the nearer it is to the critical height.
+// The strip here is 2.5 cm wide and stands `height` above a 2 cm clamp, leaning
+// kGreenhillLean from the vertical (every real column has some imperfection); its weight
+// comes on smoothly as in the cantilever. Returns the tip-chord angle from the vertical
+// through the clamp's edge at rest (radians). Cells of 6.25 mm: at the cantilever's
+// 2.5 mm the default sub-steps let the column fold at its foot under a fraction of
+// its buckling load (docs/material.md, "Greenhill's column").
+constexpr double kGreenhillLean = kPi / 180.0;
+constexpr double kGreenhillCell = 0.00625;
+double greenhillTipAngle(const FidelityOptions& o, double height) {
+    World w = clampedStrip(o, o.material, height, kGreenhillCell, "greenhill");
+    Sheet& s = w.sheet;
+    const double length = kStripClamp + height;
+    for (Index i = 0; i < s.verts.size(); ++i) {
+        const double up = s.verts.X[i].y() + 0.5 * length; // from the foot
+        s.verts.x[i] = Vec3(s.verts.X[i].x(), 0.1 + up * std::cos(kGreenhillLean),
+                            up * std::sin(kGreenhillLean));
+    }
+    const Vec3 chord = chordUnderWeight(w, o.quick);
+    return std::atan2(std::abs(chord.z()), chord.y());
+}
+
+void greenhillChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
+    const Material& m = o.material;
+    const double c = std::cbrt(m.bendingStiffness / (m.arealDensity * 9.81));
+    const double critical = greenhillCriticalHeight(c);
+    const std::string cm = cLocaleNumber(100.0 * critical, std::chars_format::fixed, 1);
+    // Where the column stands, the height whose linear theory leans as far as the
+    // simulated one: the critical height the simulation behaves as if it had.
+    const double below = 0.8 * critical;
+    const double leaned = greenhillTipAngle(o, below);
+    // (Between a tenth of it and the critical height: a column that folded reads 20 %
+    // low, one that swung back past its clamp 900 % high.)
+    double lo = 0.1 * below, hi = critical;
+    for (int k = 0; k < 60; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (greenhillTipChordAngle(mid, c, kGreenhillLean) < leaned ? lo : hi) = mid;
+    }
+    const double behavesAs = critical * below / (0.5 * (lo + hi));
+    rows.push_back({"Greenhill column " + cm + " cm",
+                    "critical height from the lean at 0.8 of it (" + degrees(leaned) +
+                        "° vs theory " + degrees(greenhillTipChordAngle(below, c, kGreenhillLean)) +
+                        "°), deviation",
+                    100.0 * std::abs(behavesAs / critical - 1.0), 10.0, true, "%"});
+    rows.push_back({"Greenhill column 1.2 × " + cm + " cm", "tip-chord angle from the vertical",
+                    greenhillTipAngle(o, 1.2 * critical) * 180.0 / kPi, 45.0, false, "°"});
 }
 
 // The desk inclined by `alpha`: returns the distance the sheet's centre of mass slid
@@ -376,6 +444,44 @@ double peirceAngle(double length, double bendingLength) {
     return 0.5 * (lo + hi);
 }
 
+double greenhillCriticalHeight(double bendingLength) {
+    return 1.986 * bendingLength;
+}
+
+double greenhillTipChordAngle(double height, double bendingLength, double lean) {
+    // The slope θ(s) of the column against the vertical, s from the clamp: D θ'' =
+    // −ρg (H − s) θ (the weight above s turns it further), θ(0) = lean, θ'(H) = 0 (no
+    // moment at the tip). Linear in the unknown θ'(0): shoot twice (RK4), combine.
+    const double k = 1.0 / (bendingLength * bendingLength * bendingLength); // ρg / D
+    constexpr int kSteps = 2000;
+    const double h = height / kSteps;
+    struct State {
+        double slope, change, lateral; // θ, θ', and ∫θ
+    };
+    const auto shoot = [&](double change0) {
+        const auto f = [&](double s, const State& y) {
+            return State{y.change, -k * (height - s) * y.slope, y.slope};
+        };
+        const auto add = [](const State& y, const State& d, double t) {
+            return State{y.slope + t * d.slope, y.change + t * d.change, y.lateral + t * d.lateral};
+        };
+        State y{lean, change0, 0.0};
+        for (int i = 0; i < kSteps; ++i) {
+            const double s = i * h;
+            const State k1 = f(s, y), k2 = f(s + 0.5 * h, add(y, k1, 0.5 * h));
+            const State k3 = f(s + 0.5 * h, add(y, k2, 0.5 * h)), k4 = f(s + h, add(y, k3, h));
+            y = State{y.slope + h / 6 * (k1.slope + 2 * k2.slope + 2 * k3.slope + k4.slope),
+                      y.change + h / 6 * (k1.change + 2 * k2.change + 2 * k3.change + k4.change),
+                      y.lateral +
+                          h / 6 * (k1.lateral + 2 * k2.lateral + 2 * k3.lateral + k4.lateral)};
+        }
+        return y;
+    };
+    const State a = shoot(0.0), b = shoot(1.0);
+    const State tip = shoot(-a.change / (b.change - a.change));
+    return std::atan2(tip.lateral, height);
+}
+
 std::vector<FidelityRow> runFidelity(const FidelityOptions& o) {
     std::vector<FidelityRow> rows;
     pressChecks(o, rows);
@@ -392,6 +498,7 @@ std::vector<FidelityRow> runFidelity(const FidelityOptions& o) {
         freeFallCheck(o, orientation, rows);
     momentumCheck(o, rows);
     cantileverChecks(o, rows);
+    greenhillChecks(o, rows);
     inclineChecks(o, rows);
     return rows;
 }

@@ -36,4 +36,11 @@ std::vector<FidelityRow> runFidelity(const FidelityOptions& options);
 // whose bending length is c = (D / w)^(1/3), from l/c = (8 tan θ / cos(θ/2))^(1/3).
 double peirceAngle(double length, double bendingLength);
 
+// Greenhill's column of bending length c = (D / ρg)^(1/3): the height above which a strip
+// clamped upright buckles under its own weight, 1.986 c; and the tip-chord angle from
+// the vertical (radians) of one `height` tall whose clamp leans `lean` (radians), by
+// linear theory (small deflections; it grows without bound toward the critical height).
+double greenhillCriticalHeight(double bendingLength);
+double greenhillTipChordAngle(double height, double bendingLength, double lean);
+
 } // namespace pf
