@@ -447,10 +447,18 @@ class TestEditor : public QObject {
             moveMouse(view, p);
             QTest::mousePress(view, Qt::LeftButton, {}, p);
             QVERIFY2(held(), tool);
+            // Greyed, Undo says why, and so does Ctrl+Z (it did nothing, silently).
+            const QString waits =
+                QStringLiteral("Undo waits until the mouse lets go of the paper.");
+            QCOMPARE(window->action("undo")->toolTip(), waits);
+            window->statusBar()->clearMessage();
             QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
             QCOMPARE(window->undoStack()->index(), 1);
+            QCOMPARE(window->statusBar()->currentMessage(), waits);
+            window->statusBar()->clearMessage();
             QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
             QCOMPARE(window->undoStack()->index(), 1);
+            QCOMPARE(window->statusBar()->currentMessage(), waits);
             moveMouse(view, p + QPoint(6, 0), Qt::LeftButton);
             QVERIFY2(held(), tool);
             // The stack's own actions enable themselves when its index moves: still held.
@@ -469,6 +477,7 @@ class TestEditor : public QObject {
             window->simulation()->sync();
             QCoreApplication::processEvents();
             QVERIFY2(free(), tool);
+            QVERIFY2(!window->action("undo")->toolTip().contains(QStringLiteral("waits")), tool);
             moveMouse(view, p);
             // Paused, the press moved nothing: no step was made, the redo still waits.
             QCOMPARE(window->undoStack()->index(), 1);
@@ -2181,6 +2190,8 @@ class TestEditor : public QObject {
         for (int s = 0; s < 180; ++s) window->simulation()->stepOnce();
         settledStatus(*window);
         QTRY_VERIFY(!window->action("undo")->isEnabled());
+        QCOMPARE(window->action("undo")->toolTip(),
+                 QStringLiteral("Undo waits until the fold is let go."));
         const double halfWay = foldAngle(worldOf(*window)->sheet, 0.297);
         // Pressed flat, nothing moves, and the sheet may sleep; but it is being folded,
         // not lying at rest (a user read "· at rest" with the flap still held).

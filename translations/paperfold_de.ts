@@ -644,6 +644,18 @@
         <source>The fold closed %1° further than asked after it was let go: its crease cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.</source>
         <translation>Die Faltung hat sich nach dem Loslassen %1° weiter geschlossen als verlangt: Ihr Knick kann die Lasche in diesem Winkel nicht halten. Bearbeiten ▸ Rückgängig entfaltet das Papier.</translation>
     </message>
+    <message>
+        <source>Undo waits until the fold is let go.</source>
+        <translation>Rückgängig wartet, bis die Faltung losgelassen ist.</translation>
+    </message>
+    <message>
+        <source>Undo waits until the sheet has settled.</source>
+        <translation>Rückgängig wartet, bis das Blatt zur Ruhe gekommen ist.</translation>
+    </message>
+    <message>
+        <source>Undo waits until the mouse lets go of the paper.</source>
+        <translation>Rückgängig wartet, bis die Maus das Papier loslässt.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -639,6 +639,18 @@
         <source>The fold closed %1° further than asked after it was let go: its crease cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.</source>
         <translation>離した後、折りが指定より %1° 深く閉じました：折り目はその角度でフラップを保てません。編集 ▸ 元に戻す で紙を開きます。</translation>
     </message>
+    <message>
+        <source>Undo waits until the fold is let go.</source>
+        <translation>元に戻すは、折りが手を離れるまで待ちます。</translation>
+    </message>
+    <message>
+        <source>Undo waits until the sheet has settled.</source>
+        <translation>元に戻すは、紙が落ち着くまで待ちます。</translation>
+    </message>
+    <message>
+        <source>Undo waits until the mouse lets go of the paper.</source>
+        <translation>元に戻すは、マウスが紙を放すまで待ちます。</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -639,6 +639,18 @@
         <source>The fold closed %1° further than asked after it was let go: its crease cannot hold the flap at that angle. Edit ▸ Undo unfolds the paper.</source>
         <translation>놓은 뒤 접힘이 요청보다 %1° 더 닫혔습니다: 접힌 자국이 그 각도에서 날개를 붙잡지 못합니다. 편집 ▸ 실행 취소로 종이를 펼칩니다.</translation>
     </message>
+    <message>
+        <source>Undo waits until the fold is let go.</source>
+        <translation>실행 취소는 접기가 손을 떠날 때까지 기다립니다.</translation>
+    </message>
+    <message>
+        <source>Undo waits until the sheet has settled.</source>
+        <translation>실행 취소는 종이가 멈출 때까지 기다립니다.</translation>
+    </message>
+    <message>
+        <source>Undo waits until the mouse lets go of the paper.</source>
+        <translation>실행 취소는 마우스가 종이를 놓을 때까지 기다립니다.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -38,6 +38,7 @@
 #include <QMenuBar>
 #include <QProgressDialog>
 #include <QSettings>
+#include <QShortcut>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTimer>
@@ -293,6 +294,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     // The stack's own actions enable themselves after indexChanged (createUndoAction):
     // gated again after them, or a step back of the History while the mouse held the
     // paper gave Ctrl+Z back.
+    for (const QKeySequence& keys :
+         {QKeySequence(QKeySequence::Undo), QKeySequence(QKeySequence::Redo),
+          QKeySequence(tr("Ctrl+Y"))}) {
+        auto* waits = new QShortcut(keys, this);
+        waits->setEnabled(false);
+        connect(waits, &QShortcut::activated, this,
+                [this] { statusBar()->showMessage(whyUndoWaits_, 5000); });
+        historyWaits_.push_back(waits);
+    }
     connect(undo_, &QUndoStack::canUndoChanged, this, &MainWindow::gateUndo);
     connect(undo_, &QUndoStack::canRedoChanged, this, &MainWindow::gateUndo);
     connect(sim_.get(), &SimulationThread::allAnswered, this, &MainWindow::gateUndo);
@@ -743,6 +753,17 @@ void MainWindow::gateUndo() {
     // settled undid the step before it, where a user meant the Settle.
     const bool busy = foldUnderWay_ || settleUnderWay_ || input_->toolPressed();
     undoView_->setEnabled(!busy);
+    // A greyed Undo said nothing of why (a helper pressed Ctrl+Z during a fold and saw
+    // nothing happen): its tip and the shortcut say it.
+    whyUndoWaits_ = foldUnderWay_     ? tr("Undo waits until the fold is let go.")
+                    : settleUnderWay_ ? tr("Undo waits until the sheet has settled.")
+                    : busy            ? tr("Undo waits until the mouse lets go of the paper.")
+                                      : QString();
+    for (const char* name : {"undo", "redo"}) {
+        action(name)->setToolTip(whyUndoWaits_); // empty: the action's own text
+        action(name)->setStatusTip(whyUndoWaits_);
+    }
+    for (QShortcut* waits : historyWaits_) waits->setEnabled(busy);
     // Until the session has answered what was sent (SimulationThread::awaitingAnswers),
     // for a frame or so: only the actions, so that the History does not flicker grey at
     // every undo.

@@ -15,8 +15,10 @@
 #include <QMessageBox>
 #include <functional>
 #include <memory>
+#include <vector>
 
 class QAction;
+class QShortcut;
 class QActionGroup;
 class QDockWidget;
 class QMenu;
@@ -140,6 +142,10 @@ class MainWindow : public QMainWindow {
     static constexpr int kMinimumWidth = 640, kMinimumHeight = 480;
     bool foldUnderWay_ = false;
     bool settleUnderWay_ = false;
+    // Ctrl+Z and Ctrl+Shift+Z while the history waits (gateUndo): they say why nothing
+    // happened, and only then are enabled (beside the enabled actions they would clash).
+    std::vector<QShortcut*> historyWaits_;
+    QString whyUndoWaits_;
     void setEditUnderWay(bool folding, bool settling);
     void showReadouts(const SimulationStatus& st);
     // Undo, Redo and the history enabled as the stack allows, unless a fold is carried,
