@@ -291,9 +291,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         statusBar()->clearMessage();
         gateUndo();
     });
-    // The stack's own actions enable themselves after indexChanged (createUndoAction):
-    // gated again after them, or a step back of the History while the mouse held the
-    // paper gave Ctrl+Z back.
+    // Pressed while the history waits, the keys say why (gateUndo enables these then).
     for (const QKeySequence& keys :
          {QKeySequence(QKeySequence::Undo), QKeySequence(QKeySequence::Redo),
           QKeySequence(tr("Ctrl+Y"))}) {
@@ -303,6 +301,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                 [this] { statusBar()->showMessage(whyUndoWaits_, 5000); });
         historyWaits_.push_back(waits);
     }
+    // The stack's own actions enable themselves after indexChanged (createUndoAction):
+    // gated again after them, or a step back of the History while the mouse held the
+    // paper gave Ctrl+Z back.
     connect(undo_, &QUndoStack::canUndoChanged, this, &MainWindow::gateUndo);
     connect(undo_, &QUndoStack::canRedoChanged, this, &MainWindow::gateUndo);
     connect(sim_.get(), &SimulationThread::allAnswered, this, &MainWindow::gateUndo);

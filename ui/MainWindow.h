@@ -142,7 +142,7 @@ class MainWindow : public QMainWindow {
     static constexpr int kMinimumWidth = 640, kMinimumHeight = 480;
     bool foldUnderWay_ = false;
     bool settleUnderWay_ = false;
-    // Ctrl+Z and Ctrl+Shift+Z while the history waits (gateUndo): they say why nothing
+    // Ctrl+Z, Ctrl+Shift+Z and Ctrl+Y while the history waits (gateUndo): they say why nothing
     // happened, and only then are enabled (beside the enabled actions they would clash).
     std::vector<QShortcut*> historyWaits_;
     QString whyUndoWaits_;
