@@ -189,7 +189,7 @@ void momentumCheck(const FidelityOptions& o, std::vector<FidelityRow>& rows) {
 
 // A strip 2.5 cm wide of `material`, `free` of it beyond a 2 cm clamp (pinned), in cells
 // of `cell`, lying flat 10 cm up; no breaks or hinges.
-constexpr double kStripWidth = 0.025, kStripClamp = 0.02;
+constexpr double kStripWidth = 0.025, kStripClamp = 0.02, kStripCell = 0.0025;
 World clampedStrip(const FidelityOptions& o, const Material& material, double free, double cell,
                    const char* scene) {
     SheetSpec spec;
@@ -262,7 +262,7 @@ Vec3 chordUnderWeight(const World& w, bool quick) {
 double cantileverAngle(const FidelityOptions& o, const Material& material, double overhang,
                        bool quick) {
     const Vec3 chord =
-        chordUnderWeight(clampedStrip(o, material, overhang, 0.0025, "cantilever"), quick);
+        chordUnderWeight(clampedStrip(o, material, overhang, kStripCell, "cantilever"), quick);
     return std::atan2(-chord.y(), chord.z());
 }
 
@@ -293,13 +293,13 @@ void cantileverChecks(const FidelityOptions& o, std::vector<FidelityRow>& rows) 
 // The strip here is 2.5 cm wide and stands `height` above a 2 cm clamp, leaning
 // kGreenhillLean from the vertical (every real column has some imperfection); its weight
 // comes on smoothly as in the cantilever. Returns the tip-chord angle from the vertical
-// through the clamp's edge at rest (radians). Cells of 6.25 mm: at the cantilever's
-// 2.5 mm the default sub-steps let the column fold at its foot under a fraction of
-// its buckling load (docs/material.md, "Greenhill's column").
+// through the clamp's edge at rest (radians). Cells of 2.5 mm, the cantilever's: with
+// the bending damping whole on every cell such a column folded at its foot under a
+// fraction of its buckling load, and the check used 6.25 mm (docs/material.md,
+// "Bending damping per cell").
 constexpr double kGreenhillLean = kPi / 180.0;
-constexpr double kGreenhillCell = 0.00625;
 double greenhillTipAngle(const FidelityOptions& o, double height) {
-    World w = clampedStrip(o, o.material, height, kGreenhillCell, "greenhill");
+    World w = clampedStrip(o, o.material, height, kStripCell, "greenhill");
     Sheet& s = w.sheet;
     const double length = kStripClamp + height;
     for (Index i = 0; i < s.verts.size(); ++i) {

@@ -369,23 +369,29 @@ void XpbdIntegrator::rebuild(Sheet& sheet, const SimParams& params) {
 void XpbdIntegrator::factor(const Sheet& sheet, const SimParams& params) {
     const auto& V = sheet.verts;
     const Index nv = V.size();
-    std::vector<Eigen::Triplet<double>> entries;
+    std::vector<Eigen::Triplet<double>> entries, damped;
     entries.reserve(16 * stencils_.size());
+    damped.reserve(16 * stencils_.size());
     for (const Stencil& st : stencils_) {
         const double c = 1.0 / st.compliance;
+        const double share = std::min(1.0, st.span / kFullyDampedSpan);
         for (int q = 0; q < st.count; ++q)
-            for (int r = 0; r < st.count; ++r)
+            for (int r = 0; r < st.count; ++r) {
                 entries.emplace_back(st.v[q], st.v[r], c * st.k[q] * st.k[r]);
+                damped.emplace_back(st.v[q], st.v[r], share * share * c * st.k[q] * st.k[r]);
+            }
     }
     bending_.resize(nv, nv);
     bending_.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SparseMatrix<double> damping(nv, nv); // Σ (β share²) Q_s, over β
+    damping.setFromTriplets(damped.begin(), damped.end());
     // Pinned vertices follow their script: in the solve they weigh a million times more,
     // which moves them by a millionth of what bending would, and their solved velocity
     // is discarded.
     solveMass_.resize(static_cast<std::size_t>(nv));
     for (Index i = 0; i < nv; ++i) solveMass_[i] = V.pinned[i] ? 1e6 * V.m[i] + 1e-3 : V.m[i];
     const double h = solveStep(params);
-    Eigen::SparseMatrix<double> a = (h * h + params.bendingDamping * h) * bending_;
+    Eigen::SparseMatrix<double> a = h * h * bending_ + params.bendingDamping * h * damping;
     for (Index i = 0; i < nv; ++i) a.coeffRef(i, i) += solveMass_[i];
     factored_ = solver_.compute(a);
     factoredDt_ = h;

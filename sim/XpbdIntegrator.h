@@ -41,6 +41,16 @@ inline constexpr double kToolReach = 0.001;
 // curvature (+48 %). Every sub-step works too but costs 1.7 times more; every 8th of 20
 // (h = 1/1200 s) still let the cantilever yield.
 inline constexpr int kSubstepsPerBendingSolve = 4;
+// Bends at least this wide (a stencil's span) get the whole Rayleigh damping β; a
+// narrower one gets β (span / kFullyDampedSpan)², so that a cell's own bend is damped
+// as much relative to its frequency (ω ∝ 1/span²) at any resolution. With β whole on
+// every stencil, a 2.5 mm cell's bends were some 6,500 times their mass in one solve,
+// pulled back only h_b/β of the way while the stretch passes pushed them out in every
+// sub-step: a column standing at 0.8 of Greenhill's height folded at its foot, and
+// a crumpled sheet of 4 mm cells kept a sub-step cycle until the still rule stopped
+// it (docs/material.md, "Bending damping per cell"). 8 mm leaves the editor's 11.7 mm
+// cells as they were.
+inline constexpr double kFullyDampedSpan = 0.008; // m
 // Fast projection after the sub-steps: Newton iterations, the largest stretch the
 // sub-steps may leave before it runs, and its compliance relative to the constraints'
 // inverse masses (a triangle mesh held by pins has more edges than free directions).
