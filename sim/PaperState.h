@@ -32,11 +32,15 @@ struct PaperState {
     std::vector<ToolGrip> grips;
     // Steps in a row in which no vertex moved farther than a slow drift allows.
     int quietSteps = 0;
-    // Steps in a row in which no vertex went farther than kStillReach from where it
-    // was when they began (stillFrom): a sheet caught in a cycle of a few steps goes
-    // nowhere, though each step moves it (XpbdIntegrator::advance).
+    // Steps in a row in which no vertex's mean position (stillMean) went farther than
+    // kStillReach from where it was when they began (stillFrom): a sheet caught in a
+    // cycle of a few steps goes nowhere, though each step moves it
+    // (XpbdIntegrator::advance).
     int stillSteps = 0;
     std::vector<Vec3> stillFrom;
+    // Each vertex's position averaged over the last steps, the latest weighing
+    // kStillAveraging (none, or one per vertex).
+    std::vector<Vec3> stillMean;
     // How fast the sheet slid across the desk, as a whole, in the step before (m/s),
     // or kSlideUnknown (sim/DeskHold.h).
     double deskSlide = kSlideUnknown;
@@ -54,6 +58,7 @@ struct PaperState {
         quietSteps = 0;
         stillSteps = 0;
         stillFrom.clear();
+        stillMean.clear();
         deskSlide = kSlideUnknown;
     }
 };

@@ -221,6 +221,10 @@ QCborMap sheetToCbor(const Sheet& s) {
     for (const Vec3& p : s.paper.stillFrom) putVec3(stillFrom, p);
     o[QLatin1String("stillFromCount")] = static_cast<qint64>(s.paper.stillFrom.size());
     o[QLatin1String("stillFrom")] = stillFrom;
+    QByteArray stillMean;
+    for (const Vec3& p : s.paper.stillMean) putVec3(stillMean, p);
+    o[QLatin1String("stillMeanCount")] = static_cast<qint64>(s.paper.stillMean.size());
+    o[QLatin1String("stillMean")] = stillMean;
     return o;
 }
 
@@ -484,6 +488,18 @@ Sheet sheetFromCbor(const QCborMap& m) {
         for (Vec3& p : s.paper.stillFrom) p = u.vec3();
         s.paper.deskSlide = realAt(m, "deskSlide", w, -1.0, 1e3);
     }
+    // Absent in files from before it: the mean starts again from where the sheet is.
+    if (m.contains(QLatin1String("stillMeanCount"))) {
+        const qint64 nq = integerAt(m, "stillMeanCount", w, 0, nv);
+        if (nq != 0 && nq != nv)
+            fail(QStringLiteral("%1.stillMeanCount: %2 positions for %3 vertices")
+                     .arg(w)
+                     .arg(nq)
+                     .arg(nv));
+        Unpacker u(bytesAt(m, "stillMean", w, nq, 24));
+        s.paper.stillMean.resize(static_cast<std::size_t>(nq));
+        for (Vec3& p : s.paper.stillMean) p = u.vec3();
+    }
     // Files from before load-driven breaking hold no peaks: the sheet counts as having
     // carried the load it stands under, so loading it does not set off a burst of breaks.
     const bool hasPeaks = m.contains(QLatin1String("peakContraction"));
@@ -718,6 +734,8 @@ const CborBounds& sheetFileBounds() {
                                 "stillSteps",
                                 "stillFromCount",
                                 "stillFrom",
+                                "stillMeanCount",
+                                "stillMean",
                                 "deskSlide"})
             b.knownKeys.insert(QString::fromLatin1(key));
         // The deepest path is root → script → pins → group → value; at most 1000 pin

@@ -183,11 +183,12 @@ std::string validateSheet(const Sheet& sheet) {
     }
     if (sheet.paper.quietSteps < 0) return "negative quiet steps";
     if (sheet.paper.stillSteps < 0) return "negative still steps";
-    const auto& stillFrom = sheet.paper.stillFrom;
-    if (!stillFrom.empty() && stillFrom.size() != static_cast<std::size_t>(nv))
-        return "the still positions do not match the vertices";
-    for (const Vec3& p : stillFrom)
-        if (!finite(p)) return "a still position is not finite";
+    for (const auto* positions : {&sheet.paper.stillFrom, &sheet.paper.stillMean}) {
+        if (!positions->empty() && positions->size() != static_cast<std::size_t>(nv))
+            return "the still positions do not match the vertices";
+        for (const Vec3& p : *positions)
+            if (!finite(p)) return "a still position is not finite";
+    }
     const double slide = sheet.paper.deskSlide;
     if (!(slide == kSlideUnknown || (std::isfinite(slide) && slide >= 0.0)))
         return "the sheet's slide across the desk is malformed";

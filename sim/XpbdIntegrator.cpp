@@ -699,11 +699,13 @@ bool XpbdIntegrator::mustWake(const Sheet& sheet) const {
 namespace {
 
 // Whether every free vertex is within reach of where it was (from, one per vertex).
-bool stayedWithin(const Vertices& V, const std::vector<Vec3>& from, double reach) {
-    if (from.size() != V.x.size()) return false;
+// Whether every free vertex's `at` lies within `reach` of its `from`.
+bool stayedWithin(const Vertices& V, const std::vector<Vec3>& at, const std::vector<Vec3>& from,
+                  double reach) {
+    if (from.size() != V.x.size() || at.size() != V.x.size()) return false;
     const double reach2 = reach * reach;
     for (Index i = 0; i < V.size(); ++i)
-        if (!V.pinned[i] && (V.x[i] - from[i]).squaredNorm() > reach2) return false;
+        if (!V.pinned[i] && (at[i] - from[i]).squaredNorm() > reach2) return false;
     return true;
 }
 
@@ -1046,8 +1048,14 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // between the sub-steps and the projection, and went nowhere (docs/material.md,
     // "Sleep").
     constexpr double kQuietSpeed = 5e-4; // m/s
-    const bool quiet = stayedWithin(V, stepStart_, kQuietSpeed * params.dt);
-    const bool still = stayedWithin(V, paper.stillFrom, kStillReach);
+    const bool quiet = stayedWithin(V, V.x, stepStart_, kQuietSpeed * params.dt);
+    if (paper.stillMean.size() != V.x.size()) {
+        paper.stillMean = V.x;
+    } else {
+        for (Index i = 0; i < nv; ++i)
+            paper.stillMean[i] += kStillAveraging * (V.x[i] - paper.stillMean[i]);
+    }
+    const bool still = stayedWithin(V, paper.stillMean, paper.stillFrom, kStillReach);
     // (Only asked of a sheet that kept still: it looks at every vertex and the tool.)
     const bool undisturbed = (quiet || still) && !gravityChanged && !mustWake(sheet);
     paper.quietSteps = quiet && undisturbed ? paper.quietSteps + 1 : 0;
@@ -1055,7 +1063,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         ++paper.stillSteps;
     } else {
         paper.stillSteps = 0;
-        paper.stillFrom = V.x;
+        paper.stillFrom = paper.stillMean;
     }
     if (sleepy()) {
         asleep_ = true;

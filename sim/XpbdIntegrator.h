@@ -32,6 +32,12 @@ inline constexpr int kStepsBeforeSleep = 30;
 // editor's default view shows the sheet.
 inline constexpr double kSecondsStillBeforeSleep = 1.0;
 inline constexpr double kStillReach = 5e-4; // m
+// The still rule reads each vertex's position averaged over the steps, the latest
+// weighing this much (about the last eight): a cycle of a few steps then reads as the
+// place it goes round. Read on the positions themselves, a sheet folded twice whose
+// crossing creases cycled through four steps 0.57 mm apart never fell asleep and cost
+// 9 ms a step for as long as it was left (docs/material.md, "Sleep").
+inline constexpr double kStillAveraging = 0.125;
 // How far below its surface the tool grips the paper it presses onto the desk (m).
 inline constexpr double kToolReach = 0.001;
 // The bending solve runs every this many sub-steps, over their time together. Its step
