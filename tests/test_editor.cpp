@@ -698,9 +698,20 @@ class TestEditor : public QObject {
         // The flat sheet lies still on the desk: once it sleeps every frame is the same.
         // (Under the thread sanitizer a step takes over 100 ms, and the sheet sleeps only
         // after a second of simulated time.)
+        // The step's cost the readout gives, µs, or -1.
+        const auto stepMicroseconds = [&] {
+            for (const QLabel* label : window->statusBar()->findChildren<QLabel*>())
+                if (label->text().startsWith(QStringLiteral("step ")))
+                    return label->text().section(u' ', 1, 1).toDouble();
+            return -1.0;
+        };
+        double firstAtRest = -1.0;
         const auto atRest = [&] {
             for (const QLabel* label : window->statusBar()->findChildren<QLabel*>())
-                if (label->text().contains(QStringLiteral(" · at rest"))) return true;
+                if (label->text().contains(QStringLiteral(" · at rest"))) {
+                    firstAtRest = stepMicroseconds();
+                    return true;
+                }
             return false;
         };
         QTRY_VERIFY_WITH_TIMEOUT(atRest(), 120000);
@@ -731,6 +742,15 @@ class TestEditor : public QObject {
                 fps = label->text().split(u' ')[0].toInt();
         }
         QVERIFY2(fps >= 0 && fps <= 2, qPrintable(shown.join(QStringLiteral(" | "))));
+        // From the first "at rest" on, the step's cost is a sleeping sheet's, not the last
+        // second's mean with the awake steps in it (a user read "step 13834 µs · at rest"
+        // and, a few seconds later, "step 10 µs · at rest").
+        const double asleep = stepMicroseconds();
+        qInfo("step at the first \"at rest\": %.0f µs; 1.5 s later: %.0f µs", firstAtRest, asleep);
+        QVERIFY(asleep >= 0.0 && firstAtRest >= 0.0);
+        // (Either way round: the second's mean came in once its second was over.)
+        QVERIFY2(firstAtRest <= 5.0 * asleep + 20.0 && asleep <= 5.0 * firstAtRest + 20.0,
+                 qPrintable(shown.join(QStringLiteral(" | "))));
         // And it says the sheet is at rest, not only that a step is cheap.
         QVERIFY2(shown.join(QStringLiteral(" | ")).contains(QStringLiteral(" · at rest")),
                  qPrintable(shown.join(QStringLiteral(" | "))));
@@ -917,6 +937,13 @@ class TestEditor : public QObject {
         shown.clear();
         for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
         QVERIFY2(shown.contains(QStringLiteral("step 12 µs · at rest")),
+                 qPrintable(shown.join(QStringLiteral(" | "))));
+        // Asleep for less than a tick, no step's cost is a sleeping one's yet.
+        st.stepSeconds = 0.0;
+        readout.show(st);
+        shown.clear();
+        for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
+        QVERIFY2(shown.contains(QStringLiteral("at rest")),
                  qPrintable(shown.join(QStringLiteral(" | "))));
         QVERIFY(!installLanguage(QStringLiteral("fr")));
         QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Pin 1 vertex"));
@@ -1184,6 +1211,25 @@ class TestEditor : public QObject {
         QTest::keyClicks(steps, QStringLiteral("8000"));
         QTest::keyClick(steps, Qt::Key_Return);
         QCOMPARE(steps->value(), steps->maximum());
+    }
+
+    // Return in a number box gives the keys back to the view: a user typed 180 into the
+    // fold's angle, pressed Return, then 1 for the top view, and the angle became 1°.
+    void returnInANumberBoxGivesTheKeysBackToTheView() {
+        QSpinBox* angle = window->panel()->foldAngleSpin();
+        angle->setFocus();
+        angle->selectAll();
+        QTest::keyClicks(angle, QStringLiteral("120"));
+        QTest::keyClick(angle, Qt::Key_Return);
+        QCOMPARE(angle->value(), 120);
+        QCOMPARE(window->focusWidget(), static_cast<QWidget*>(window->viewport()));
+        QTest::keyClick(window->focusWidget(), Qt::Key_1);
+        QCOMPARE(angle->value(), 120);
+        // Leaving the box otherwise (a click elsewhere) keeps the focus where it went.
+        QDoubleSpinBox* phi = window->panel()->phiSpin();
+        angle->setFocus();
+        phi->setFocus();
+        QCOMPARE(window->focusWidget(), static_cast<QWidget*>(phi));
     }
 
     // The first-run hint shows until the first thing done in the view, and not again.
@@ -2185,14 +2231,24 @@ class TestEditor : public QObject {
         QVERIFY(view->foldLine().isNull());
         QVERIFY(waitForCount(answered, 1));
         QCOMPARE(answered.last().at(0).toInt(), int(FoldRefusal::None));
-        QVERIFY(window->statusBar()->currentMessage().startsWith(QStringLiteral("Folding")));
-        // Half way round: the flap stands up, and undo waits for the fold.
+        // Paused (as this test steps it), the fold waits for Play, and the status bar says
+        // so: "Folding: …" stood over a held, still fold, and a user thought it stuck.
+        QVERIFY2(window->statusBar()->currentMessage().startsWith(
+                     QStringLiteral("Paused: the fold waits. Space plays")),
+                 qPrintable(window->statusBar()->currentMessage()));
+        // Half way round: the flap stands up, and undo waits for the fold (and, paused,
+        // for Play).
         for (int s = 0; s < 180; ++s) window->simulation()->stepOnce();
         settledStatus(*window);
         QTRY_VERIFY(!window->action("undo")->isEnabled());
         QCOMPARE(window->action("undo")->toolTip(),
-                 QStringLiteral("Undo waits until the fold is let go."));
+                 QStringLiteral("Undo waits until the fold is let go, and the simulation is "
+                                "paused: Space plays."));
         const double halfWay = foldAngle(worldOf(*window)->sheet, 0.297);
+        window->action("play")->setChecked(true);
+        QCOMPARE(window->action("undo")->toolTip(),
+                 QStringLiteral("Undo waits until the fold is let go."));
+        window->action("play")->setChecked(false);
         // Pressed flat, nothing moves, and the sheet may sleep; but it is being folded,
         // not lying at rest (a user read "· at rest" with the flap still held).
         for (int s = 0; s < 300; ++s) window->simulation()->stepOnce();

@@ -656,6 +656,14 @@
         <source>Undo waits until the mouse lets go of the paper.</source>
         <translation>Rückgängig wartet, bis die Maus das Papier loslässt.</translation>
     </message>
+    <message>
+        <source>Paused: the fold waits. Space plays and carries the paper round the line; Ctrl+. steps.</source>
+        <translation>Angehalten: Die Faltung wartet. Die Leertaste spielt ab und führt das Papier um die Linie; Strg+. macht einen Schritt.</translation>
+    </message>
+    <message>
+        <source>Undo waits until the fold is let go, and the simulation is paused: Space plays.</source>
+        <translation>Rückgängig wartet, bis die Faltung losgelassen ist, und die Simulation ist angehalten: Die Leertaste spielt ab.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>
@@ -939,6 +947,10 @@
     <message>
         <source>no step yet</source>
         <translation>noch kein Schritt</translation>
+    </message>
+    <message>
+        <source>at rest</source>
+        <translation>in Ruhe</translation>
     </message>
 </context>
 <context>

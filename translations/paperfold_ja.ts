@@ -651,6 +651,14 @@
         <source>Undo waits until the mouse lets go of the paper.</source>
         <translation>元に戻すは、マウスが紙を放すまで待ちます。</translation>
     </message>
+    <message>
+        <source>Paused: the fold waits. Space plays and carries the paper round the line; Ctrl+. steps.</source>
+        <translation>一時停止中：折りは待機しています。Space で再生すると紙が線の周りに折られます。Ctrl+. で1ステップ。</translation>
+    </message>
+    <message>
+        <source>Undo waits until the fold is let go, and the simulation is paused: Space plays.</source>
+        <translation>元に戻すは、折りが手を離れるまで待ちます。シミュレーションは一時停止中です：Space で再生。</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>
@@ -930,6 +938,10 @@
     <message>
         <source>no step yet</source>
         <translation>まだステップなし</translation>
+    </message>
+    <message>
+        <source>at rest</source>
+        <translation>静止</translation>
     </message>
 </context>
 <context>

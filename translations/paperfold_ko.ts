@@ -651,6 +651,14 @@
         <source>Undo waits until the mouse lets go of the paper.</source>
         <translation>실행 취소는 마우스가 종이를 놓을 때까지 기다립니다.</translation>
     </message>
+    <message>
+        <source>Paused: the fold waits. Space plays and carries the paper round the line; Ctrl+. steps.</source>
+        <translation>일시 정지됨: 접기가 기다리고 있습니다. Space를 누르면 재생되어 종이가 선을 따라 접힙니다. Ctrl+. 한 단계.</translation>
+    </message>
+    <message>
+        <source>Undo waits until the fold is let go, and the simulation is paused: Space plays.</source>
+        <translation>실행 취소는 접기가 손을 떠날 때까지 기다리며, 시뮬레이션이 일시 정지되어 있습니다: Space 재생.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>
@@ -930,6 +938,10 @@
     <message>
         <source>no step yet</source>
         <translation>아직 단계 없음</translation>
+    </message>
+    <message>
+        <source>at rest</source>
+        <translation>정지</translation>
     </message>
 </context>
 <context>

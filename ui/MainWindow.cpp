@@ -26,6 +26,7 @@
 #include "ViewportInput.h"
 #include "WorkerPool.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
@@ -34,6 +35,7 @@
 #include <QEventLoop>
 #include <QFileInfo>
 #include <QKeyEvent>
+#include <QLineEdit>
 #include <QLocale>
 #include <QMenuBar>
 #include <QProgressDialog>
@@ -281,7 +283,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         sim_->fold({from, to, panel_->foldAngle(), panel_->foldMountain(), viewer});
     });
     connect(sim_.get(), &SimulationThread::foldAnswered, this, [this](int refusal) {
-        statusBar()->showMessage(foldAnswerText(static_cast<FoldRefusal>(refusal)), 8000);
+        // Paused, "Folding: …" replaced the stroke's "Paused: …" at once, and the fold
+        // stood held and still, its Undo greyed, with nothing saying that Play moves it.
+        if (refusal == int(FoldRefusal::None) && !playing_)
+            statusBar()->showMessage(tr("Paused: the fold waits. Space plays and carries the "
+                                        "paper round the line; Ctrl+. steps."));
+        else
+            statusBar()->showMessage(foldAnswerText(static_cast<FoldRefusal>(refusal)), 8000);
         if (refusal == int(FoldRefusal::None)) setEditUnderWay(true, settleUnderWay_);
     });
     // The stack enables its own actions whenever it moves (a parameter change, say). A
@@ -439,6 +447,7 @@ void MainWindow::createActions() {
     connect(play, &QAction::toggled, this, [this](bool on) {
         playing_ = on;
         if (on) statusBar()->clearMessage(); // "Paused: …" and the like are over
+        gateUndo();                          // why it waits may be the pause
         sim_->setPlaying(on);
         action("play")->setIcon(
             style()->standardIcon(on ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
@@ -602,6 +611,14 @@ void MainWindow::createDocks() {
     for (DockScrollArea* area : {panelArea, solverArea})
         connect(area, &DockScrollArea::contentsResized, this, &MainWindow::fitDocks,
                 Qt::QueuedConnection);
+    // Return in a number box gives the keys back to the view: a user typed 180° into the
+    // fold's angle, pressed Return and then 1 for the top view, and the angle became 1°
+    // (the box kept the focus, and a digit is text to it, not a shortcut).
+    for (QWidget* panel : {static_cast<QWidget*>(panel_), static_cast<QWidget*>(solver_)})
+        for (auto* box : panel->findChildren<QAbstractSpinBox*>())
+            if (auto* edit = box->findChild<QLineEdit*>())
+                connect(edit, &QLineEdit::returnPressed, this,
+                        [this] { viewport_->setFocus(Qt::OtherFocusReason); });
     viewMenu_->addSeparator();
     viewMenu_->addAction(panelDock_->toggleViewAction());
     viewMenu_->addAction(historyDock_->toggleViewAction());
@@ -756,7 +773,10 @@ void MainWindow::gateUndo() {
     undoView_->setEnabled(!busy);
     // A greyed Undo said nothing of why (a helper pressed Ctrl+Z during a fold and saw
     // nothing happen): its tip and the shortcut say it.
-    whyUndoWaits_ = foldUnderWay_     ? tr("Undo waits until the fold is let go.")
+    whyUndoWaits_ = foldUnderWay_ && !playing_
+                        ? tr("Undo waits until the fold is let go, and the simulation is "
+                             "paused: Space plays.")
+                    : foldUnderWay_   ? tr("Undo waits until the fold is let go.")
                     : settleUnderWay_ ? tr("Undo waits until the sheet has settled.")
                     : busy            ? tr("Undo waits until the mouse lets go of the paper.")
                                       : QString();

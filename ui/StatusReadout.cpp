@@ -58,12 +58,13 @@ void StatusReadout::show(const SimulationStatus& st) {
     updateFps();
     // A user could not tell a sheet lying still from one that only looked still.
     QString step = st.stepSeconds > 0.0 ? tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0)
+                   : st.resting()       ? QString() // asleep for less than a tick
                                         : tr("no step yet");
     // Paused, the toolbar's icon was the only sign, and a paused sheet could read "at rest".
     if (!st.playing)
         step = tr("%1 · paused").arg(step);
     else if (st.resting())
-        step = tr("%1 · at rest").arg(step);
+        step = step.isEmpty() ? tr("at rest") : tr("%1 · at rest").arg(step);
     // Behind real time, the paper falls and slides slower than paper does: say so, and
     // what helps.
     // (A sheet at rest keeps up whatever the last second's pace was: a user read
