@@ -698,8 +698,7 @@ bool XpbdIntegrator::mustWake(const Sheet& sheet) const {
 
 namespace {
 
-// Whether every free vertex is within reach of where it was (from, one per vertex).
-// Whether every free vertex's `at` lies within `reach` of its `from`.
+// Whether every free vertex's `at` lies within `reach` of its `from` (one per vertex).
 bool stayedWithin(const Vertices& V, const std::vector<Vec3>& at, const std::vector<Vec3>& from,
                   double reach) {
     if (from.size() != V.x.size() || at.size() != V.x.size()) return false;
