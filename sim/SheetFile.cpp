@@ -386,6 +386,21 @@ SimParams paramsFromCbor(const QCborMap& m) {
     return p;
 }
 
+// Positions under `key`, as many as `countKey` says: none, or one per vertex.
+std::vector<Vec3> noneOrOnePerVertex(const QCborMap& m, const char* countKey, const char* key,
+                                     const QString& where, qint64 vertices) {
+    const qint64 n = integerAt(m, countKey, where, 0, vertices);
+    if (n != 0 && n != vertices)
+        fail(QStringLiteral("%1.%2: %3 positions for %4 vertices")
+                 .arg(where, QLatin1String(countKey))
+                 .arg(n)
+                 .arg(vertices));
+    Unpacker u(bytesAt(m, key, where, n, 24));
+    std::vector<Vec3> positions(static_cast<std::size_t>(n));
+    for (Vec3& p : positions) p = u.vec3();
+    return positions;
+}
+
 Sheet sheetFromCbor(const QCborMap& m) {
     const QString w = QStringLiteral("sheet");
     Sheet s;
@@ -477,29 +492,12 @@ Sheet sheetFromCbor(const QCborMap& m) {
     // Absent in files from before it: the sheet falls still from its first step on.
     if (m.contains(QLatin1String("stillFromCount"))) {
         s.paper.stillSteps = static_cast<int>(integerAt(m, "stillSteps", w, 0, 1'000'000'000));
-        const qint64 nq = integerAt(m, "stillFromCount", w, 0, nv);
-        if (nq != 0 && nq != nv)
-            fail(QStringLiteral("%1.stillFromCount: %2 positions for %3 vertices")
-                     .arg(w)
-                     .arg(nq)
-                     .arg(nv));
-        Unpacker u(bytesAt(m, "stillFrom", w, nq, 24));
-        s.paper.stillFrom.resize(static_cast<std::size_t>(nq));
-        for (Vec3& p : s.paper.stillFrom) p = u.vec3();
+        s.paper.stillFrom = noneOrOnePerVertex(m, "stillFromCount", "stillFrom", w, nv);
         s.paper.deskSlide = realAt(m, "deskSlide", w, -1.0, 1e3);
     }
     // Absent in files from before it: the mean starts again from where the sheet is.
-    if (m.contains(QLatin1String("stillMeanCount"))) {
-        const qint64 nq = integerAt(m, "stillMeanCount", w, 0, nv);
-        if (nq != 0 && nq != nv)
-            fail(QStringLiteral("%1.stillMeanCount: %2 positions for %3 vertices")
-                     .arg(w)
-                     .arg(nq)
-                     .arg(nv));
-        Unpacker u(bytesAt(m, "stillMean", w, nq, 24));
-        s.paper.stillMean.resize(static_cast<std::size_t>(nq));
-        for (Vec3& p : s.paper.stillMean) p = u.vec3();
-    }
+    if (m.contains(QLatin1String("stillMeanCount")))
+        s.paper.stillMean = noneOrOnePerVertex(m, "stillMeanCount", "stillMean", w, nv);
     // Files from before load-driven breaking hold no peaks: the sheet counts as having
     // carried the load it stands under, so loading it does not set off a burst of breaks.
     const bool hasPeaks = m.contains(QLatin1String("peakContraction"));
