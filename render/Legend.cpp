@@ -35,9 +35,12 @@ LegendContent legendContent(const RenderOptions& options) {
                                          "Break probability P (Eq. 10, per %1 % more contraction)")
                  .arg(locale.toString(100.0 * SimParams{}.breakReferenceContraction)),
              top(options.probabilityRange, QString())});
+    // Compression too: a user read the red of a fold's compressed creases as stretched
+    // paper, while the Solver dock said the stretch was 0.07 %.
     if (options.overlays & OverlayStrain)
-        content.bars.push_back({QCoreApplication::translate("Legend", "Strain |l/l0 - 1|"),
-                                top(options.strainRange * 100.0, QStringLiteral("%"))});
+        content.bars.push_back(
+            {QCoreApplication::translate("Legend", "Strain |l/l0 - 1|, stretched or compressed"),
+             top(options.strainRange * 100.0, QStringLiteral("%"))});
     auto& swatches = content.swatches;
     if (options.overlays & OverlaySpringKinds) {
         swatches.push_back({QColor::fromRgbF(0.10, 0.30, 0.95),

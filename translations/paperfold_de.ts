@@ -12,10 +12,6 @@
         <translation>Bruchwahrscheinlichkeit P (Gl. 10, je %1 % mehr Stauchung)</translation>
     </message>
     <message>
-        <source>Strain |l/l0 - 1|</source>
-        <translation>Dehnung |l/l0 - 1|</translation>
-    </message>
-    <message>
         <source>breakable spring</source>
         <translation>brechbare Feder</translation>
     </message>
@@ -34,6 +30,10 @@
     <message>
         <source>broken in the last second</source>
         <translation>in der letzten Sekunde gebrochen</translation>
+    </message>
+    <message>
+        <source>Strain |l/l0 - 1|, stretched or compressed</source>
+        <translation>Dehnung |l/l0 - 1|, gestreckt oder gestaucht</translation>
     </message>
 </context>
 <context>

@@ -12,10 +12,6 @@
         <translation>破断確率 P（式10、収縮が %1 % 増えるごと）</translation>
     </message>
     <message>
-        <source>Strain |l/l0 - 1|</source>
-        <translation>ひずみ |l/l0 - 1|</translation>
-    </message>
-    <message>
         <source>breakable spring</source>
         <translation>破断可能なばね</translation>
     </message>
@@ -34,6 +30,10 @@
     <message>
         <source>broken in the last second</source>
         <translation>直近1秒の破断</translation>
+    </message>
+    <message>
+        <source>Strain |l/l0 - 1|, stretched or compressed</source>
+        <translation>ひずみ |l/l0 - 1|（伸びまたは縮み）</translation>
     </message>
 </context>
 <context>

@@ -12,10 +12,6 @@
         <translation>파단 확률 P (식 10, 수축이 %1 % 늘 때마다)</translation>
     </message>
     <message>
-        <source>Strain |l/l0 - 1|</source>
-        <translation>변형률 |l/l0 - 1|</translation>
-    </message>
-    <message>
         <source>breakable spring</source>
         <translation>파단 가능한 스프링</translation>
     </message>
@@ -34,6 +30,10 @@
     <message>
         <source>broken in the last second</source>
         <translation>최근 1초 안에 파단</translation>
+    </message>
+    <message>
+        <source>Strain |l/l0 - 1|, stretched or compressed</source>
+        <translation>변형률 |l/l0 - 1| (늘어남 또는 줄어듦)</translation>
     </message>
 </context>
 <context>
