@@ -27,9 +27,9 @@ inline constexpr double kCreaseBendingShare = 0.02;
 // many steps in a row, with no tool moving near it and no pinned vertex moving, falls
 // asleep.
 inline constexpr int kStepsBeforeSleep = 30;
-// So does one whose every free vertex stays within kStillReach of where it was for
-// this long: a drift of 0.5 mm/s at most, and a jitter of about two pixels where the
-// editor's default view shows the sheet.
+// So does one whose every free vertex's mean position (kStillAveraging) stays within
+// kStillReach of where it was for this long: a drift of 0.5 mm/s at most, and a jitter
+// of about two pixels where the editor's default view shows the sheet.
 inline constexpr double kSecondsStillBeforeSleep = 1.0;
 inline constexpr double kStillReach = 5e-4; // m
 // The still rule reads each vertex's position averaged over the steps, the latest
