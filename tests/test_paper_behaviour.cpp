@@ -268,8 +268,8 @@ class TestPaperBehaviour : public QObject {
     }
 
     // A user's sheet, folded in two at 90° (it fell shut) and then mountain-folded
-    // through the stack, φ 0.57, ψ 0.71, saved from the editor a second after the
-    // let-go. Where the creases cross, light vertices the breaks inserted went round a
+    // through the stack, φ 0.57, ψ 0.71, saved from the editor while it cycled, minutes
+    // after the let-go. Where the creases cross, light vertices the breaks inserted went round a
     // cycle of four steps 0.57 mm across, the still rule read their positions, and the
     // sheet never fell asleep: for minutes the editor stepped it at 9-15 ms a step, a
     // quarter of real time, with nothing to see moving. Read on each vertex's mean
