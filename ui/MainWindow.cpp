@@ -300,15 +300,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         gateUndo();
     });
     // Pressed while the history waits, the keys say why (gateUndo enables these then).
-    for (const QKeySequence& keys :
-         {QKeySequence(QKeySequence::Undo), QKeySequence(QKeySequence::Redo),
-          QKeySequence(tr("Ctrl+Y"))}) {
-        auto* waits = new QShortcut(keys, this);
-        waits->setEnabled(false);
-        connect(waits, &QShortcut::activated, this,
-                [this] { statusBar()->showMessage(whyUndoWaits_, 5000); });
-        historyWaits_.push_back(waits);
-    }
+    for (const char* name : {"undo", "redo"})
+        for (const QKeySequence& keys : action(name)->shortcuts()) {
+            auto* waits = new QShortcut(keys, this);
+            waits->setEnabled(false);
+            connect(waits, &QShortcut::activated, this,
+                    [this] { statusBar()->showMessage(whyUndoWaits_, 5000); });
+            historyWaits_.push_back(waits);
+        }
     // The stack's own actions enable themselves after indexChanged (createUndoAction):
     // gated again after them, or a step back of the History while the mouse held the
     // paper gave Ctrl+Z back.

@@ -203,7 +203,7 @@ void SimulationWorker::frame() {
     // view taking the core) does not stop the catching up.
     stepCost_ = stepCost_ > 0.0 ? 0.8 * stepCost_ + 0.2 * cost : cost;
     lastStepSeconds_ = cost;
-    asleepStepSeconds_ = wasAsleep && session_.simulation().asleep() ? cost : 0.0;
+    lastTickAsleep_ = wasAsleep && session_.simulation().asleep();
     // A sleeping sheet is the picture already shown: making, hashing and comparing a
     // new one each frame kept 42 % of a core busy at 14,100 vertices (83,160 springs)
     // with nothing to show, and the view 11 % comparing it with the last.
@@ -243,7 +243,7 @@ void SimulationWorker::setClock(SimulationStatus& st) const {
     // the sheet fell asleep in, held awake steps, and a user read "step 13834 µs · at
     // rest".
     const bool asleep = session_.simulation().asleep();
-    st.stepSeconds = playing_ && asleep                       ? asleepStepSeconds_
+    st.stepSeconds = playing_ && asleep ? (lastTickAsleep_ ? lastStepSeconds_ : 0.0)
                      : playing_ && pacer_.stepSeconds() > 0.0 ? pacer_.stepSeconds()
                                                               : lastStepSeconds_;
     st.threads = session_.simulation().threads();

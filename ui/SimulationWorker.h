@@ -99,9 +99,9 @@ class SimulationWorker : public QObject {
     // What the last step took. An edit's status shows it too: every edit read "step 0 µs"
     // until the next frame's steps (a user saw "step 0 µs · 0.11× real time" after an undo).
     double lastStepSeconds_ = 0.0;
-    // What a step cost in the last tick the sheet slept through from its start; 0 until
-    // there is one.
-    double asleepStepSeconds_ = 0.0;
+    // Whether the sheet slept through the last tick from its start, so that
+    // lastStepSeconds_ is a sleeping step's cost.
+    bool lastTickAsleep_ = false;
     bool playing_ = true;
     // The last snapshot and status published, the velocities they were made from, and
     // whether an edit has come since (an edit may change what no comparison covers; a
