@@ -38,6 +38,7 @@
 #include <QMouseEvent>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QScopeGuard>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
@@ -652,6 +653,45 @@ class TestEditor : public QObject {
         entry->trigger();
         QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
         QTRY_VERIFY(window->windowTitle().startsWith(name));
+    }
+
+    // A sheet opened by a name relative to where the editor started is kept in Open
+    // Recent by its whole path, once however it was named: from another folder (the next
+    // session's) the entry opens it. An entry whose sheet is gone is taken off once it
+    // fails, with the error said.
+    void openRecentKeepsWholePathsAndDropsWhatIsGone() {
+        QTemporaryDir dir, elsewhere;
+        const QString before = QDir::currentPath();
+        const auto back = qScopeGuard([&] { QDir::setCurrent(before); });
+        nextFile = dir.filePath(QStringLiteral("kept.paper"));
+        window->action("saveAs")->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        QVERIFY(QDir::setCurrent(dir.path()));
+        QVERIFY(window->openFile(QStringLiteral("kept.paper")));
+        QVERIFY(window->openFile(QStringLiteral("./kept.paper")));
+        const auto entries = [&] {
+            QList<QAction*> found;
+            for (QAction* a : window->findChildren<QAction*>())
+                if (a->toolTip().startsWith(dir.path()) ||
+                    (a->toolTip().endsWith(QStringLiteral("kept.paper")) &&
+                     QFileInfo(a->toolTip()).isRelative()))
+                    found.append(a);
+            return found;
+        };
+        QCOMPARE(entries().size(), 1);
+        QCOMPARE(entries().front()->toolTip(), QFileInfo(nextFile).absoluteFilePath());
+        QVERIFY(QDir::setCurrent(elsewhere.path()));
+        window->newScene(QStringLiteral("drape"));
+        QTRY_VERIFY(!window->windowTitle().startsWith(QStringLiteral("kept.paper")));
+        entries().front()->trigger();
+        QVERIFY2(lastError.isEmpty(), qPrintable(lastError));
+        QTRY_VERIFY(window->windowTitle().startsWith(QStringLiteral("kept.paper")));
+
+        window->newScene(QStringLiteral("drape"));
+        QVERIFY(QFile::remove(nextFile));
+        entries().front()->trigger();
+        QVERIFY(lastError.contains(QStringLiteral("kept.paper")));
+        QVERIFY(entries().isEmpty());
     }
 
     void saveThenOpenRestoresTheSheetExactly() {

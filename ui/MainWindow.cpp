@@ -585,7 +585,9 @@ void MainWindow::createMenus() {
     for (const char* name : kOverlayActions) toolBar_->addAction(action(name));
     recent_ = new RecentFiles(recentMenu_, this);
     connect(recent_, &RecentFiles::openRequested, this, [this](const QString& path) {
-        if (maybeSave()) openFile(path);
+        // An entry whose sheet can no longer be opened (moved, deleted, broken) goes:
+        // the error has said why, and the menu should not offer it again.
+        if (maybeSave() && !openFile(path)) recent_->remove(path);
     });
 }
 
