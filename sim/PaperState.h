@@ -32,15 +32,25 @@ struct PaperState {
     std::vector<ToolGrip> grips;
     // Steps in a row in which no vertex moved farther than a slow drift allows.
     int quietSteps = 0;
-    // Steps in a row in which no vertex's mean position (stillMean) went farther than
-    // kStillReach from where it was when they began (stillFrom): a sheet caught in a
-    // cycle of a few steps goes nowhere, though each step moves it
-    // (XpbdIntegrator::advance).
-    int stillSteps = 0;
-    std::vector<Vec3> stillFrom;
-    // Each vertex's position averaged over the last steps, the latest weighing
-    // kStillAveraging (none, or one per vertex).
-    std::vector<Vec3> stillMean;
+    // Each vertex's position averaged over the last steps (`mean`, none or one per
+    // vertex), and the steps in a row in which none of those went farther than
+    // kStillReach from where it was when they began (`from`): a sheet caught in a cycle
+    // goes nowhere, though each step moves it (XpbdIntegrator::advance).
+    struct StillWatch {
+        int steps = 0;
+        std::vector<Vec3> from;
+        std::vector<Vec3> mean;
+        void clear() {
+            steps = 0;
+            from.clear();
+            mean.clear();
+        }
+        friend bool operator==(const StillWatch&, const StillWatch&) = default;
+    };
+    // Averaged over about the last eight steps (kStillAveraging): cycles of a few steps.
+    StillWatch still;
+    // Over about the last half second (kSlowStillAveraging): cycles of about a second.
+    StillWatch slowStill;
     // How fast the sheet slid across the desk, as a whole, in the step before (m/s),
     // or kSlideUnknown (sim/DeskHold.h).
     double deskSlide = kSlideUnknown;
@@ -56,9 +66,8 @@ struct PaperState {
     // Whatever held the sheet may be gone: it is quiet again only from here on.
     void wake() {
         quietSteps = 0;
-        stillSteps = 0;
-        stillFrom.clear();
-        stillMean.clear();
+        still.clear();
+        slowStill.clear();
         deskSlide = kSlideUnknown;
     }
 };

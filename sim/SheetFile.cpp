@@ -214,17 +214,21 @@ QCborMap sheetToCbor(const Sheet& s) {
     o[QLatin1String("gripCount")] = static_cast<qint64>(s.paper.grips.size());
     o[QLatin1String("grips")] = grips;
     o[QLatin1String("quietSteps")] = s.paper.quietSteps;
-    o[QLatin1String("stillSteps")] = s.paper.stillSteps;
     o[QLatin1String("deskSlide")] = s.paper.deskSlide;
-    // Where the vertices were when the sheet fell still (none, or one per vertex).
-    QByteArray stillFrom;
-    for (const Vec3& p : s.paper.stillFrom) putVec3(stillFrom, p);
-    o[QLatin1String("stillFromCount")] = static_cast<qint64>(s.paper.stillFrom.size());
-    o[QLatin1String("stillFrom")] = stillFrom;
-    QByteArray stillMean;
-    for (const Vec3& p : s.paper.stillMean) putVec3(stillMean, p);
-    o[QLatin1String("stillMeanCount")] = static_cast<qint64>(s.paper.stillMean.size());
-    o[QLatin1String("stillMean")] = stillMean;
+    // Where the vertices' means were when the sheet fell still, and the means (none, or
+    // one per vertex), for each average the still rule reads.
+    const auto putWatch = [&](const PaperState::StillWatch& watch, const QString& prefix) {
+        o[prefix + QLatin1String("Steps")] = watch.steps;
+        for (const auto& [positions, name] : {std::pair{&watch.from, QLatin1String("From")},
+                                              {&watch.mean, QLatin1String("Mean")}}) {
+            QByteArray bytes;
+            for (const Vec3& p : *positions) putVec3(bytes, p);
+            o[prefix + name + QLatin1String("Count")] = static_cast<qint64>(positions->size());
+            o[prefix + name] = bytes;
+        }
+    };
+    putWatch(s.paper.still, QStringLiteral("still"));
+    putWatch(s.paper.slowStill, QStringLiteral("slowStill"));
     return o;
 }
 
@@ -491,13 +495,22 @@ Sheet sheetFromCbor(const QCborMap& m) {
     }
     // Absent in files from before it: the sheet falls still from its first step on.
     if (m.contains(QLatin1String("stillFromCount"))) {
-        s.paper.stillSteps = static_cast<int>(integerAt(m, "stillSteps", w, 0, 1'000'000'000));
-        s.paper.stillFrom = noneOrOnePerVertex(m, "stillFromCount", "stillFrom", w, nv);
+        s.paper.still.steps = static_cast<int>(integerAt(m, "stillSteps", w, 0, 1'000'000'000));
+        s.paper.still.from = noneOrOnePerVertex(m, "stillFromCount", "stillFrom", w, nv);
         s.paper.deskSlide = realAt(m, "deskSlide", w, -1.0, 1e3);
     }
     // Absent in files from before it: the mean starts again from where the sheet is.
     if (m.contains(QLatin1String("stillMeanCount")))
-        s.paper.stillMean = noneOrOnePerVertex(m, "stillMeanCount", "stillMean", w, nv);
+        s.paper.still.mean = noneOrOnePerVertex(m, "stillMeanCount", "stillMean", w, nv);
+    // Absent in files from before the slow average: it starts again from where the sheet is.
+    if (m.contains(QLatin1String("slowStillFromCount"))) {
+        s.paper.slowStill.steps =
+            static_cast<int>(integerAt(m, "slowStillSteps", w, 0, 1'000'000'000));
+        s.paper.slowStill.from =
+            noneOrOnePerVertex(m, "slowStillFromCount", "slowStillFrom", w, nv);
+        s.paper.slowStill.mean =
+            noneOrOnePerVertex(m, "slowStillMeanCount", "slowStillMean", w, nv);
+    }
     // Files from before load-driven breaking hold no peaks: the sheet counts as having
     // carried the load it stands under, so loading it does not set off a burst of breaks.
     const bool hasPeaks = m.contains(QLatin1String("peakContraction"));
@@ -734,6 +747,11 @@ const CborBounds& sheetFileBounds() {
                                 "stillFrom",
                                 "stillMeanCount",
                                 "stillMean",
+                                "slowStillSteps",
+                                "slowStillFromCount",
+                                "slowStillFrom",
+                                "slowStillMeanCount",
+                                "slowStillMean",
                                 "deskSlide"})
             b.knownKeys.insert(QString::fromLatin1(key));
         // The deepest path is root → script → pins → group → value; at most 1000 pin

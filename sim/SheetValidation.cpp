@@ -182,12 +182,14 @@ std::string validateSheet(const Sheet& sheet) {
             return "a tool grip is malformed";
     }
     if (sheet.paper.quietSteps < 0) return "negative quiet steps";
-    if (sheet.paper.stillSteps < 0) return "negative still steps";
-    for (const auto* positions : {&sheet.paper.stillFrom, &sheet.paper.stillMean}) {
-        if (!positions->empty() && positions->size() != static_cast<std::size_t>(nv))
-            return "the still positions do not match the vertices";
-        for (const Vec3& p : *positions)
-            if (!finite(p)) return "a still position is not finite";
+    for (const PaperState::StillWatch* watch : {&sheet.paper.still, &sheet.paper.slowStill}) {
+        if (watch->steps < 0) return "negative still steps";
+        for (const auto* positions : {&watch->from, &watch->mean}) {
+            if (!positions->empty() && positions->size() != static_cast<std::size_t>(nv))
+                return "the still positions do not match the vertices";
+            for (const Vec3& p : *positions)
+                if (!finite(p)) return "a still position is not finite";
+        }
     }
     const double slide = sheet.paper.deskSlide;
     if (!(slide == kSlideUnknown || (std::isfinite(slide) && slide >= 0.0)))

@@ -745,7 +745,9 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     const int stillStepsBeforeSleep =
         static_cast<int>(std::ceil(kSecondsStillBeforeSleep / params.dt - 1e-9));
     const auto sleepy = [&] {
-        return paper.quietSteps >= kStepsBeforeSleep || paper.stillSteps >= stillStepsBeforeSleep;
+        return paper.quietSteps >= kStepsBeforeSleep ||
+               paper.still.steps >= stillStepsBeforeSleep ||
+               paper.slowStill.steps >= stillStepsBeforeSleep;
     };
     const auto stopFreeVertices = [&] {
         for (Index i = 0; i < nv; ++i)
@@ -1048,21 +1050,26 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // "Sleep").
     constexpr double kQuietSpeed = 5e-4; // m/s
     const bool quiet = stayedWithin(V, V.x, stepStart_, kQuietSpeed * params.dt);
-    if (paper.stillMean.size() != V.x.size()) {
-        paper.stillMean = V.x;
-    } else {
-        for (Index i = 0; i < nv; ++i)
-            paper.stillMean[i] += kStillAveraging * (V.x[i] - paper.stillMean[i]);
-    }
-    const bool still = stayedWithin(V, paper.stillMean, paper.stillFrom, kStillReach);
+    const auto averageAndRead = [&](PaperState::StillWatch& watch, double averaging) {
+        if (watch.mean.size() != V.x.size()) {
+            watch.mean = V.x;
+        } else {
+            for (Index i = 0; i < nv; ++i) watch.mean[i] += averaging * (V.x[i] - watch.mean[i]);
+        }
+        return stayedWithin(V, watch.mean, watch.from, kStillReach);
+    };
+    const bool still = averageAndRead(paper.still, kStillAveraging);
+    const bool slowStill = averageAndRead(paper.slowStill, kSlowStillAveraging);
     // (Only asked of a sheet that kept still: it looks at every vertex and the tool.)
-    const bool undisturbed = (quiet || still) && !gravityChanged && !mustWake(sheet);
+    const bool undisturbed = (quiet || still || slowStill) && !gravityChanged && !mustWake(sheet);
     paper.quietSteps = quiet && undisturbed ? paper.quietSteps + 1 : 0;
-    if (still && undisturbed) {
-        ++paper.stillSteps;
-    } else {
-        paper.stillSteps = 0;
-        paper.stillFrom = paper.stillMean;
+    for (auto [watch, kept] : {std::pair{&paper.still, still}, {&paper.slowStill, slowStill}}) {
+        if (kept && undisturbed) {
+            ++watch->steps;
+        } else {
+            watch->steps = 0;
+            watch->from = watch->mean;
+        }
     }
     if (sleepy()) {
         asleep_ = true;

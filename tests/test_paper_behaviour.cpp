@@ -305,6 +305,41 @@ class TestPaperBehaviour : public QObject {
         QVERIFY(sim.asleep());
     }
 
+    // A user's sheet of card, pinned at two corners and crumpled (a helper's editor
+    // session, 2026-12-01): one vertex of it swung 0.9 mm up and down and the paper round
+    // it less, in a cycle of 1.1 s, for as long as it was left, and the editor stepped it
+    // at a fifth of real time with nothing to see moving. Averaged over eight steps its
+    // position still goes 0.85 mm round; over the last half second, 0.3 mm, and the sheet
+    // sleeps.
+    void aPinnedCardThatSwingsInPlaceFallsAsleep() {
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
+        std::optional<World> state = packedState("pinned-card-swing.paper.qz");
+        QVERIFY(state);
+        QCOMPARE(QString::fromStdString(state->params.material.name), QStringLiteral("card"));
+        Simulation sim(std::move(*state));
+        const auto& x = sim.world().sheet.verts.x;
+        std::vector<Vec3> lowest = x, highest = x;
+        int steps = 0;
+        for (; steps < 2400 && !sim.asleep(); ++steps) {
+            QCOMPARE(sim.step(), StepStatus::Ok);
+            for (std::size_t i = 0; i < x.size(); ++i) {
+                lowest[i] = lowest[i].cwiseMin(x[i]);
+                highest[i] = highest[i].cwiseMax(x[i]);
+            }
+        }
+        double swing = 0.0;
+        for (std::size_t i = 0; i < x.size(); ++i)
+            swing = std::max(swing, (highest[i] - lowest[i]).norm());
+        qInfo("asleep after %.2f s; the widest a vertex swung %.2f mm", steps / 240.0, 1e3 * swing);
+        // It was not lying still: a vertex swung farther than the still reach.
+        QVERIFY(swing > kStillReach);
+        QVERIFY2(sim.asleep(), "the sheet never fell asleep");
+        QVERIFY(steps < 480);
+        QVERIFY(swing < 2e-3);
+        for (int k = 0; k < 240; ++k) QCOMPARE(sim.step(), StepStatus::Ok);
+        QVERIFY(sim.asleep());
+    }
+
     void aSleepingSheetDoesNotBreak() {
         // The gate itself: once the sheet has come to rest it falls asleep, stays asleep
         // for 10 s (nothing wakes it) and Eq. 10 draws nothing in that time.

@@ -452,7 +452,7 @@ class TestSheetFile : public QObject {
             const bool sliding = !sawSlide && state.deskSlide > 1e-3; // 1 mm/s
             // (The still rule reads the vertices' mean positions, which follow a sheet that
             // has just landed some steps late: the quiet rule puts this one to sleep first.)
-            const bool settling = !sawSettling && state.stillSteps > 3 && !whole.asleep();
+            const bool settling = !sawSettling && state.still.steps > 3 && !whole.asleep();
             if (!sliding && !settling) continue;
             sawSlide = sawSlide || sliding;
             sawSettling = sawSettling || settling;
@@ -471,11 +471,14 @@ class TestSheetFile : public QObject {
         w.params.integrator = "xpbd";
         Simulation sim(w);
         for (int k = 0; k < 40; ++k) QCOMPARE(sim.step(), StepStatus::Ok);
-        QVERIFY(!sim.world().sheet.paper.stillFrom.empty());
+        QVERIFY(!sim.world().sheet.paper.still.from.empty());
+        QVERIFY(!sim.world().sheet.paper.slowStill.from.empty());
         QCborMap root = QCborValue::fromCbor(encodeWorld(sim.world())).toMap();
         QCborMap sheet = root[QLatin1String("sheet")].toMap();
-        for (const char* key : {"stillSteps", "stillFromCount", "stillFrom", "stillMeanCount",
-                                "stillMean", "deskSlide"}) {
+        for (const char* key :
+             {"stillSteps", "stillFromCount", "stillFrom", "stillMeanCount", "stillMean",
+              "slowStillSteps", "slowStillFromCount", "slowStillFrom", "slowStillMeanCount",
+              "slowStillMean", "deskSlide"}) {
             QVERIFY(sheet.contains(QLatin1String(key)));
             sheet.remove(QLatin1String(key));
         }
@@ -483,9 +486,11 @@ class TestSheetFile : public QObject {
         const WorldLoad l = decodeWorld(QCborValue(root).toCbor());
         QVERIFY2(l.world, qPrintable(l.error));
         const PaperState& p = l.world->sheet.paper;
-        QCOMPARE(p.stillSteps, 0);
-        QVERIFY(p.stillFrom.empty());
-        QVERIFY(p.stillMean.empty());
+        for (const PaperState::StillWatch* watch : {&p.still, &p.slowStill}) {
+            QCOMPARE(watch->steps, 0);
+            QVERIFY(watch->from.empty());
+            QVERIFY(watch->mean.empty());
+        }
         QCOMPARE(p.deskSlide, kSlideUnknown);
         QCOMPARE(p.quietSteps, sim.world().sheet.paper.quietSteps);
         Simulation resumed(*l.world);
@@ -564,6 +569,14 @@ class TestSheetFile : public QObject {
             QCborMap sheet = root[QLatin1String("sheet")].toMap();
             sheet[QLatin1String("stillFromCount")] = 3;
             sheet[QLatin1String("stillFrom")] = f64s({0, 0, 0, 0, 0, 0, 0, 0, 0});
+            root[QLatin1String("sheet")] = sheet;
+            return QCborValue(root).toCbor();
+        }() << "3 positions for";
+        QTest::newRow("slow still means for three vertices") << [] {
+            QCborMap root = QCborValue::fromCbor(validFile()).toMap();
+            QCborMap sheet = root[QLatin1String("sheet")].toMap();
+            sheet[QLatin1String("slowStillMeanCount")] = 3;
+            sheet[QLatin1String("slowStillMean")] = f64s({0, 0, 0, 0, 0, 0, 0, 0, 0});
             root[QLatin1String("sheet")] = sheet;
             return QCborValue(root).toCbor();
         }() << "3 positions for";
