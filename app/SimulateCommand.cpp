@@ -7,6 +7,7 @@
 #include "WorldOptions.h"
 
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QTextStream>
 
@@ -61,11 +62,18 @@ int runSimulate(const QStringList& arguments) {
     QJsonObject stats = statsJson(sim.world(), wall, done);
     stats[QStringLiteral("diverged")] = diverged;
     stats[QStringLiteral("threads")] = sim.threads();
+    // A saved sheet is named by its file; "scene" stays the scene it began as.
+    QString name = stats[QStringLiteral("scene")].toString();
+    if (parser.isSet(QStringLiteral("load"))) {
+        const QString file = parser.value(QStringLiteral("load"));
+        stats[QStringLiteral("loaded")] = file;
+        name = QStringLiteral("%1 (begun as %2)").arg(QFileInfo(file).fileName(), name);
+    }
     if (parser.isSet(QStringLiteral("stats"))) {
         QTextStream(stdout) << QJsonDocument(stats).toJson(QJsonDocument::Compact) << '\n';
     } else {
         QTextStream(stdout) << QStringLiteral("%1: %2 steps, %3 breaks, %4 hinges, %5 steps/s\n")
-                                   .arg(stats[QStringLiteral("scene")].toString())
+                                   .arg(name)
                                    .arg(done)
                                    .arg(stats[QStringLiteral("breaks")].toInt())
                                    .arg(stats[QStringLiteral("hinges")].toInt())

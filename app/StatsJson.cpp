@@ -12,6 +12,9 @@ QJsonObject statsJson(const World& w, double wallSeconds, long long steps) {
     o[QStringLiteral("integrator")] = QString::fromStdString(w.params.integrator);
     o[QStringLiteral("iterations")] = w.params.iterations;
     o[QStringLiteral("dt")] = w.params.dt;
+    // xpbd's paper and sub-steps (the other integrators read neither).
+    o[QStringLiteral("material")] = QString::fromStdString(w.params.material.name);
+    o[QStringLiteral("substeps")] = w.params.substeps;
     o[QStringLiteral("seed")] = QString::number(w.seed);
     o[QStringLiteral("steps")] = steps;
     o[QStringLiteral("vertices")] = st.vertices;

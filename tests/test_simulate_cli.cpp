@@ -161,6 +161,10 @@ class TestSimulateCli : public QObject {
                                 "hinges", "total_mass", "max_strain", "rms_strain", "state_hash",
                                 "sim_time", "wall_seconds", "steps_per_second", "build_tuning"})
             QVERIFY2(o.contains(QLatin1String(key)), key);
+        // The settings used: xpbd's paper and sub-steps too.
+        QCOMPARE(o[QStringLiteral("material")].toString(), QStringLiteral("office"));
+        QCOMPARE(o[QStringLiteral("substeps")].toInt(), 40);
+        QVERIFY(!o.contains(QLatin1String("loaded")));
         // The speed is reported with the tuning that measured it: portable unless the
         // build asked for -march=native (the tests are built with the same options).
         const QString tuning = o[QStringLiteral("build_tuning")].toString();
@@ -278,6 +282,12 @@ class TestSimulateCli : public QObject {
         QVERIFY(whole[QStringLiteral("breaks")].toInt() > 0);
         QCOMPARE(resumed[QStringLiteral("state_hash")], whole[QStringLiteral("state_hash")]);
         QCOMPARE(resumed[QStringLiteral("sim_time")], whole[QStringLiteral("sim_time")]);
+        // A loaded sheet is named by its file, and the scene it began as is kept.
+        QCOMPARE(resumed[QStringLiteral("loaded")].toString(), path);
+        QCOMPARE(resumed[QStringLiteral("scene")].toString(), QStringLiteral("press"));
+        const Result line = runPaperfold({"simulate", "--load", path, "--steps", "1"});
+        QCOMPARE(line.exitCode, 0);
+        QVERIFY2(line.out.startsWith("half.paper (begun as press): 1 steps"), line.out.constData());
     }
 
     void loadingABadFileGivesOneLineError() {
