@@ -564,22 +564,19 @@ class TestSheetFile : public QObject {
             << withPaperState(0, {}, 1, toolGrip(0, 1, 1, 0)) << "tool grip is malformed";
         QTest::newRow("more grips than triangles")
             << withPaperState(0, {}, qint64(1) << 40, {}) << "gripCount";
-        QTest::newRow("still positions for three vertices") << [] {
+        // Positions for three vertices where the sheet has more.
+        const auto threePositions = [](const char* countKey, const char* key) {
             QCborMap root = QCborValue::fromCbor(validFile()).toMap();
             QCborMap sheet = root[QLatin1String("sheet")].toMap();
-            sheet[QLatin1String("stillFromCount")] = 3;
-            sheet[QLatin1String("stillFrom")] = f64s({0, 0, 0, 0, 0, 0, 0, 0, 0});
+            sheet[QLatin1String(countKey)] = 3;
+            sheet[QLatin1String(key)] = f64s({0, 0, 0, 0, 0, 0, 0, 0, 0});
             root[QLatin1String("sheet")] = sheet;
             return QCborValue(root).toCbor();
-        }() << "3 positions for";
-        QTest::newRow("slow still means for three vertices") << [] {
-            QCborMap root = QCborValue::fromCbor(validFile()).toMap();
-            QCborMap sheet = root[QLatin1String("sheet")].toMap();
-            sheet[QLatin1String("slowStillMeanCount")] = 3;
-            sheet[QLatin1String("slowStillMean")] = f64s({0, 0, 0, 0, 0, 0, 0, 0, 0});
-            root[QLatin1String("sheet")] = sheet;
-            return QCborValue(root).toCbor();
-        }() << "3 positions for";
+        };
+        QTest::newRow("still positions for three vertices")
+            << threePositions("stillFromCount", "stillFrom") << "3 positions for";
+        QTest::newRow("slow still means for three vertices")
+            << threePositions("slowStillMeanCount", "slowStillMean") << "3 positions for";
         QTest::newRow("a slide of negative speed")
             << withField({"sheet", "deskSlide"}, -0.5) << "slide across the desk";
         QTest::newRow("a slide faster than sound")
