@@ -226,6 +226,14 @@ void EditSession::releaseGrab() {
     sim_.setHeldVertex(kNone);
 }
 
+double EditSession::grabHeldBack() const {
+    if (!grabbing()) return 0.0;
+    const auto& V = sim_.world().sheet.verts;
+    for (Index i = 0; i < V.size(); ++i)
+        if (V.pinned[i] && i != grabbed_) return (V.x[grabbed_] - grabTarget_).norm();
+    return 0.0;
+}
+
 World EditSession::worldToSave() const {
     World w = sim_.world();
     if (grabbing()) w.sheet.verts.pinned[grabbed_] = 0; // held by the hand, not pinned

@@ -119,6 +119,12 @@ class EditSession {
     // The world as a file should keep it: a grabbed vertex is held, not pinned.
     World worldToSave() const;
     Index grabbedVertex() const { return grabbed_; }
+    // How far the paper the hand holds is from where the hand pulls it (m) while pins hold
+    // the paper too; 0 when nothing is held or no pin holds the paper. Paper pulled taut
+    // between pins does not stretch to follow, and the hand pulls with at most
+    // kHandForce (a pinch the paper would slip from): a user dragging on saw the paper
+    // stay where it was and took the Grab tool for broken.
+    double grabHeldBack() const;
     // Pin: toggles the vertices around `point` — when the click is on free paper (see
     // kOnPinShare), the free vertices within `radius` of the point are pinned; when it is
     // on a pin, that pin is freed: the vertices the click that set it pinned, or, for a

@@ -664,6 +664,10 @@
         <source>Undo waits until the fold is let go, and the simulation is paused: Space plays.</source>
         <translation>Rückgängig wartet, bis die Faltung losgelassen ist, und die Simulation ist angehalten: Die Leertaste spielt ab.</translation>
     </message>
+    <message>
+        <source>The pins hold this paper taut: the hand pulls it with at most %1 N, as a pinch does before paper slips from it, and paper does not stretch to follow.</source>
+        <translation>Die Anheftungen halten dieses Papier straff: Die Hand zieht mit höchstens %1 N, wie ein Fingergriff, bevor Papier aus ihm rutscht, und Papier dehnt sich nicht, um ihr zu folgen.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -659,6 +659,10 @@
         <source>Undo waits until the fold is let go, and the simulation is paused: Space plays.</source>
         <translation>元に戻すは、折りが手を離れるまで待ちます。シミュレーションは一時停止中です：Space で再生。</translation>
     </message>
+    <message>
+        <source>The pins hold this paper taut: the hand pulls it with at most %1 N, as a pinch does before paper slips from it, and paper does not stretch to follow.</source>
+        <translation>ピン留めがこの紙をぴんと張っています。手は最大 %1 N で引きます（それを超えると、つまんだ紙は指から滑ります）。紙は伸びてついて来ません。</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

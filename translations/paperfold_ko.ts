@@ -659,6 +659,10 @@
         <source>Undo waits until the fold is let go, and the simulation is paused: Space plays.</source>
         <translation>실행 취소는 접기가 손을 떠날 때까지 기다리며, 시뮬레이션이 일시 정지되어 있습니다: Space 재생.</translation>
     </message>
+    <message>
+        <source>The pins hold this paper taut: the hand pulls it with at most %1 N, as a pinch does before paper slips from it, and paper does not stretch to follow.</source>
+        <translation>고정점이 이 종이를 팽팽하게 잡고 있습니다. 손은 최대 %1 N으로 당기며(그 이상이면 집은 종이가 손가락에서 미끄러집니다), 종이는 늘어나서 따라오지 않습니다.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

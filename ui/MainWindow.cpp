@@ -25,6 +25,7 @@
 #include "Viewport.h"
 #include "ViewportInput.h"
 #include "WorkerPool.h"
+#include "XpbdIntegrator.h"
 
 #include <QAbstractSpinBox>
 #include <QAction>
@@ -745,6 +746,16 @@ void MainWindow::onSnapshot() {
         // The last snapshot before a pause or a quiet spell is shown too, a little later.
         readoutLater_->start(std::max(0, kReadoutMs - int(readoutClock_.elapsed())));
     setEditUnderWay(st.folding, st.settling);
+    if (!input_->toolPressed()) {
+        heldBackSaid_ = false;
+    } else if (st.grabHeldBack > kHeldBackSaid && !heldBackSaid_) {
+        heldBackSaid_ = true;
+        statusBar()->showMessage(
+            tr("The pins hold this paper taut: the hand pulls it with at most %1 N, as a pinch "
+               "does before paper slips from it, and paper does not stretch to follow.")
+                .arg(QLocale().toString(kHandForce)),
+            8000);
+    }
     updateTitle();
 }
 

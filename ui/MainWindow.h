@@ -54,6 +54,9 @@ class MainWindow : public QMainWindow {
     static constexpr const char* kImageSizeSetting = "export/imageSize";
     // How often the live numbers (step time, stretch, fps) are redrawn at most.
     static constexpr int kReadoutMs = 250;
+    // Paper the hand holds this far from the cursor, with pins holding it too, is held
+    // back by the pins: the status bar says so, once a grab (m).
+    static constexpr double kHeldBackSaid = 0.02;
     // The cores that step the sheet unless the user chose: all but one, which the view
     // needs (ui/README.md, "Cores for the step": on two cores, stepping on both while
     // the view drew made a 50k-spring sheet's steps 1.3-1.6 times slower).
@@ -141,6 +144,7 @@ class MainWindow : public QMainWindow {
     QString scene_ = QStringLiteral("press");
     static constexpr int kMinimumWidth = 640, kMinimumHeight = 480;
     bool foldUnderWay_ = false;
+    bool heldBackSaid_ = false; // in this grab
     bool settleUnderWay_ = false;
     // Ctrl+Z, Ctrl+Shift+Z and Ctrl+Y while the history waits (gateUndo): they say why nothing
     // happened, and only then are enabled (beside the enabled actions they would clash).

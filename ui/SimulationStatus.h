@@ -19,9 +19,10 @@ struct SimulationStatus {
     int threads = 1;   // the step runs on
     double pace = 1.0; // simulated seconds per wall-clock second while playing (FramePacer)
     bool playing = false;
-    bool folding = false;  // a fold is under way: undo, redo and the other tools wait
-    bool settling = false; // a Settle is under way (not frozen yet): undo and redo wait
-    bool asleep = false;   // the integrator sleeps: nothing moves, a step costs almost nothing
+    bool folding = false;      // a fold is under way: undo, redo and the other tools wait
+    bool settling = false;     // a Settle is under way (not frozen yet): undo and redo wait
+    bool asleep = false;       // the integrator sleeps: nothing moves, a step costs almost nothing
+    double grabHeldBack = 0.0; // EditSession::grabHeldBack (m)
     std::uint64_t sheetHash = 0; // editedStateHash: tells whether it differs from a file
     // Held pressed flat, a fold's sheet may sleep; it is being folded, not lying at rest.
     bool resting() const { return asleep && !folding; }

@@ -274,6 +274,7 @@ void SimulationWorker::publish() {
     st.maxStretch = stats.maxStretch;
     st.rmsStretch = stats.rmsStretch;
     st.sheetHash = editedStateHash(w.sheet);
+    st.grabHeldBack = session_.grabHeldBack();
     shown_ = std::make_shared<const SheetSnapshot>(makeSnapshot(session_.simulation()));
     shownStatus_ = st;
     shownVelocities_ = w.sheet.verts.v;
