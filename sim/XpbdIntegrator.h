@@ -41,8 +41,8 @@ inline constexpr double kStillAveraging = 0.125;
 // ... and, read alongside, averaged over about the last 128 steps (half a second): a
 // pinned, crumpled card swung one vertex 0.9 mm up and down, and the paper round it less,
 // in a cycle of 264 steps (1.1 s) for as long as it was left, costing 15-31 ms a step
-// (a helper's editor session, 2026-12-01); averaged over eight steps it goes 0.85 mm
-// round, over 128 0.3 mm. Read on this average alone, a tissue sheet folded twice
+// (a helper's editor session, 2026-12-01); its mean over eight steps spans 0.80 mm,
+// over 128 0.10 mm. Read on this average alone, a tissue sheet folded twice
 // slept 6 s later than on the other (its mean lags the settling after the let-go), so
 // the sheet sleeps when either has stayed put.
 inline constexpr double kSlowStillAveraging = 1.0 / 128.0;

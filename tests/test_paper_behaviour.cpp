@@ -308,8 +308,8 @@ class TestPaperBehaviour : public QObject {
     // A user's sheet of card, pinned at two corners and crumpled (a helper's editor
     // session, 2026-12-01): one vertex of it swung 0.9 mm up and down and the paper round
     // it less, in a cycle of 1.1 s, for as long as it was left, and the editor stepped it
-    // at a fifth of real time with nothing to see moving. Averaged over eight steps its
-    // position still goes 0.85 mm round; over the last half second, 0.3 mm, and the sheet
+    // at a fifth of real time with nothing to see moving. Its mean position over eight
+    // steps still spans 0.80 mm; over the last half second, 0.10 mm, and the sheet
     // sleeps.
     void aPinnedCardThatSwingsInPlaceFallsAsleep() {
         if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
