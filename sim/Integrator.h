@@ -6,6 +6,7 @@
 #include "StepWorkers.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,6 +40,9 @@ class Integrator {
     virtual void lendWorkers(const StepWorkers&) {}
     // True while the sheet sleeps: at rest, untouched, and not integrated.
     virtual bool asleep() const { return false; }
+    // Where the last step held the tool back, short of where it was asked to go: paper
+    // drawn taut (by pins, say) that it could not push further without stretching.
+    virtual std::optional<Vec3> toolHeldAt() const { return std::nullopt; }
     // True if a structural spring stretched kDivergenceStretch times means the step blew
     // up. The paper's Jacobi (any sweeps, 3×3 or scalar blocks) is a truncated iteration
     // whose stretch has no such bound (11,350 % in `drop` at resolution 60, 1,383 % in

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -154,6 +155,9 @@ inline constexpr double kContactSeparationSpeed = 0.1;
 // Paper closer than this many crease spacings to a vertex in the material is its own
 // layer bending, not another layer it could touch: the creases and hinges keep it.
 inline constexpr double kContactApart = 3.0;
+// Halvings of a step's move in which the tool stops short of paper drawn taut: a step
+// moves it at most EditSession::kMaxToolSpeed · dt (6 mm at 1/240 s), found to 6 µm.
+inline constexpr int kToolHoldBisections = 10;
 // Compliance of the tool's grip (m/N): a millimetre of slack per newton.
 inline constexpr double kGripCompliance = 1e-3;
 // A hand that grabs the paper holds its vertex by a grip of the same compliance and pulls
@@ -185,6 +189,7 @@ class XpbdIntegrator final : public Integrator {
     bool resolvesContacts() const override { return true; }
     void setContacts(const ContactScene& scene) override { contacts_ = scene; }
     bool asleep() const override { return asleep_; }
+    std::optional<Vec3> toolHeldAt() const override { return toolHeldAt_; }
     // The fast projection's work since this integrator was made: Newton iterations that
     // factored their system (each with its own ordering, factorisation and solve).
     struct ProjectionWork {
@@ -226,6 +231,11 @@ class XpbdIntegrator final : public Integrator {
     void yieldPlastically(Sheet& sheet, const Material& m);
     void projectStretch(Sheet& sheet, double dt, int iterations, double compliance);
     void relaxWhatTheProjectionLeft(Sheet& sheet, double dt, int sweeps);
+    // Pushes the paper out of the tool at the end of the step, and stops the tool short
+    // (toolHeldAt_) where that would stretch taut paper; `from` is where it began.
+    void holdToolWhereThePaperIsTaut(const Vec3& from,
+                                     const std::function<void(const Vec3&)>& pushOut,
+                                     bool toolInThePaper, Sheet& sheet);
     bool retrying_ = false; // in the projection's second start (kLeftoverSweeps): no third
     struct {
         std::vector<Vec3> x, v;
@@ -271,6 +281,8 @@ class XpbdIntegrator final : public Integrator {
     bool factored_ = false;
     std::vector<Vec3> rhs_, sol_;
     std::vector<Vec3> xPrev_;
+    std::vector<Vec3> beforeTool_;      // positions before the tool's last push out
+    std::optional<Vec3> toolHeldAt_;    // where the last step stopped the tool
     std::vector<Vec3> stepStart_;       // positions before this step's sub-steps
     std::vector<double> w_;             // inverse masses, 0 for pinned vertices
     std::vector<std::uint8_t> touched_; // touched by the tool in this sub-step
