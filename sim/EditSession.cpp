@@ -747,6 +747,9 @@ StepStatus EditSession::advance(int steps) {
         sphere.center += move;
         sphere.velocity = move / w.params.dt;
         pullGrabbed();
+        // While the sheet settles or stands settled the scene's motions wait: their
+        // times move on with the clock.
+        if (settle_ != Settle::None) shiftScript(w.script.pins, w.params.dt);
         if (settle_ == Settle::Frozen) {
             // Kept as it is: the clock runs (commands stay stamped in order), nothing moves.
             ++w.stepCount;
@@ -795,6 +798,9 @@ void EditSession::settle() {
 void EditSession::setSettle(Settle settle) {
     settle_ = settle;
     sim_.allowDamage(settle == Settle::None);
+    // "Keep it like this": a scene's motions wait too (crumple-cycles' rim pulled the
+    // sheet flat while it settled), and go on from where they stood at the next edit.
+    sim_.holdScript(settle != Settle::None);
 }
 
 StepStatus EditSession::settleStep() {

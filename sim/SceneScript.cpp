@@ -61,4 +61,12 @@ void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, Sp
     }
 }
 
+void holdScriptStill(const SceneScript& script, Sheet& sheet, SphereTool& sphere, Index held) {
+    if (!script.sphereKeys.empty()) sphere.velocity.setZero();
+    auto& V = sheet.verts;
+    for (const PinGroup& g : script.pins)
+        for (Index i : g.vertices)
+            if (V.pinned[i] && i != held) V.v[i].setZero();
+}
+
 } // namespace pf

@@ -48,6 +48,11 @@ struct SceneScript {
 void applyScript(const SceneScript& script, double t, double h, Sheet& sheet, SphereTool& sphere,
                  Index held = kNone);
 
+// The script's motions stopped: its pinned vertices (but `held`) and its sphere keep
+// still for the step.
+void holdScriptStill(const SceneScript& script, Sheet& sheet, SphereTool& sphere,
+                     Index held = kNone);
+
 // Position on the sphere path at time t (held constant outside the keys).
 Vec3 spherePathAt(const std::vector<SphereKey>& keys, double t);
 

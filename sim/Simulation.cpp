@@ -117,7 +117,10 @@ StepStatus Simulation::step() {
     Sheet& sheet = w.sheet;
     lastBreaks_ = lastHinges_ = 0;
 
-    applyScript(w.script, w.time, p.dt, sheet, w.sphere, heldVertex_);
+    if (scriptHeld_)
+        holdScriptStill(w.script, sheet, w.sphere, heldVertex_);
+    else
+        applyScript(w.script, w.time, p.dt, sheet, w.sphere, heldVertex_);
     // The paper's springs are soft enough to be squeezed under a sphere that dips below
     // the desk (the press scene is drawn for them); real paper is not.
     if (integrator_->resolvesContacts()) keepToolAboveDesk(w);

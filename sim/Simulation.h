@@ -53,6 +53,9 @@ class Simulation {
     // The sheet or its parameters were changed between steps (undo, redo, new φ).
     void sheetEdited() { probabilitiesCurrent_ = false; }
     // Off: steps neither break nor hinge, whatever the parameters say (a settle).
+    // Held, the scene's scripted motions stand still: its pinned vertices and its sphere
+    // stay where they are (a Settle keeps the sheet as the user saw it).
+    void holdScript(bool held) { scriptHeld_ = held; }
     void allowDamage(bool allowed) {
         damageAllowed_ = allowed;
         sheetEdited();
@@ -91,6 +94,7 @@ class Simulation {
     int lastHinges_ = 0;
     mutable bool probabilitiesCurrent_ = false;
     bool damageAllowed_ = true;
+    bool scriptHeld_ = false;
     Index heldVertex_ = kNone;
 };
 

@@ -969,6 +969,44 @@ class TestEditSession : public QObject {
         QVERIFY(!session.takeFinished());
     }
 
+    // Settle is "keep it like this": a scene's motions wait while the sheet settles and
+    // while it stands settled, and go on from where they stood at the next edit. (A
+    // user's Settle of crumple-cycles mid-gather: its rim went on gathering and pulled
+    // the sheet flat again while it settled.)
+    void aSettleHoldsTheScenesMotionsStill() {
+        World scene = test::machineryScene("crumple-cycles");
+        const std::vector<Index> rim = scene.script.pins.front().vertices;
+        const auto rimOf = [&](const EditSession& s) {
+            std::vector<Vec3> at;
+            for (Index i : rim) at.push_back(s.world().sheet.verts.x[i]);
+            return at;
+        };
+        const int gather = static_cast<int>(std::lround(kCrumpleGather * 240));
+        EditSession uninterrupted(scene);
+        QCOMPARE(uninterrupted.advance(gather), StepStatus::Ok);
+        EditSession session(std::move(scene));
+        QCOMPARE(session.advance(gather / 2), StepStatus::Ok);
+        const std::vector<Vec3> midGather = rimOf(session);
+        QVERIFY(midGather != rimOf(uninterrupted)); // the rim was on its way
+        session.settle();
+        for (int k = 0; k < 2000 && session.settling(); ++k) {
+            QCOMPARE(session.advance(1), StepStatus::Ok);
+            QVERIFY(rimOf(session) == midGather);
+        }
+        QVERIFY(session.frozen());
+        QCOMPARE(session.advance(240), StepStatus::Ok);
+        QVERIFY(rimOf(session) == midGather);
+        session.setParams(session.world().params); // an edit: the sheet moves on
+        QVERIFY(!session.frozen());
+        QCOMPARE(session.advance(gather - gather / 2), StepStatus::Ok);
+        // The gather went on from where it stood, and ended where it ends.
+        double off = 0.0;
+        const std::vector<Vec3> gathered = rimOf(session), expected = rimOf(uninterrupted);
+        for (std::size_t k = 0; k < rim.size(); ++k)
+            off = std::max(off, (gathered[k] - expected[k]).norm());
+        QVERIFY2(off < 1e-6, qPrintable(QString::number(off)));
+    }
+
     void aSessionWithASettleReplays() {
         EditSession session(test::machineryScene("press"));
         pushStroke(session, 0.0, 0.5);
