@@ -119,7 +119,9 @@ bool parseCommand(QCommandLineParser& parser, const QStringList& arguments, int 
     for (qsizetype k = 0; k < given.size(); ++k)
         if (given.indexOf(given[k]) != k)
             throw UsageError{QStringLiteral("--%1 is given more than once").arg(given[k])};
-    if (parser.isSet(QStringLiteral("help"))) {
+    // --help-all too (addHelpOption lists it): it ran the command, which for figures,
+    // crumple, stability and bench wrote over their output folders.
+    if (parser.isSet(QStringLiteral("help")) || parser.isSet(QStringLiteral("help-all"))) {
         QTextStream(stdout) << parser.helpText();
         return false;
     }

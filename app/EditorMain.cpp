@@ -7,13 +7,55 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QOpenGLContext>
 #include <QSettings>
 #include <QSurfaceFormat>
 #include <QTextStream>
+#include <string_view>
 
 namespace pf {
 
+namespace {
+
+void addEditorOptions(QCommandLineParser& parser) {
+    parser.setApplicationDescription(QStringLiteral("PaperFold: crumple and fold virtual paper."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addOption(
+        {QStringLiteral("lang"),
+         QStringLiteral("Interface language: en, de, ja or ko (default: the system's)."),
+         QStringLiteral("code")});
+    parser.addPositionalArgument(QStringLiteral("sheet"), QStringLiteral("A .paper file to open."));
+}
+
+void nameApplication() {
+    QCoreApplication::setOrganizationName(QStringLiteral("PaperFold"));
+    QCoreApplication::setApplicationName(QStringLiteral("PaperFold"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_STRING));
+}
+
+// --help and --version print and end: they need no display ("paperfold --version" over
+// ssh said the editor needs one).
+bool asksOnlyForText(int argc, char* argv[]) {
+    for (int k = 1; k < argc; ++k) {
+        const std::string_view a = argv[k];
+        if (a == "--help" || a == "-h" || a == "--help-all" || a == "--version" || a == "-v")
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
 int runEditor(int argc, char* argv[]) {
+    if (asksOnlyForText(argc, argv)) {
+        QCoreApplication app(argc, argv);
+        nameApplication();
+        QCommandLineParser parser;
+        addEditorOptions(parser);
+        parser.process(app); // prints, and exits
+        return 0;
+    }
     if (const QString problem = displayProblem(); !problem.isEmpty()) {
         QTextStream(stderr) << "paperfold: " << problem
                             << ".\nRun it in a desktop session, or use the headless commands "
@@ -24,20 +66,23 @@ int runEditor(int argc, char* argv[]) {
     QSurfaceFormat::setDefaultFormat(Viewport::requiredFormat());
     Viewport::prepareProcess();
     QApplication app(argc, argv);
-    QCoreApplication::setOrganizationName(QStringLiteral("PaperFold"));
-    QCoreApplication::setApplicationName(QStringLiteral("PaperFold"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_STRING));
-
+    nameApplication();
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("PaperFold: crumple and fold virtual paper."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    parser.addOption(
-        {QStringLiteral("lang"),
-         QStringLiteral("Interface language: en, de, ja or ko (default: the system's)."),
-         QStringLiteral("code")});
-    parser.addPositionalArgument(QStringLiteral("sheet"), QStringLiteral("A .paper file to open."));
+    addEditorOptions(parser);
     parser.process(app);
+    // A platform with no OpenGL (QT_QPA_PLATFORM=offscreen, minimal or vnc) let the
+    // window be made and crashed in its first paint (SIGSEGV).
+    QOpenGLContext probe;
+    probe.setFormat(Viewport::requiredFormat());
+    if (!probe.create()) {
+        QTextStream(stderr) << "paperfold: the editor draws with OpenGL "
+                            << Viewport::requiredFormat().majorVersion() << '.'
+                            << Viewport::requiredFormat().minorVersion() << ", and the platform '"
+                            << QGuiApplication::platformName()
+                            << "' gives no OpenGL context.\nRun it in a desktop session, or use "
+                               "the headless commands (paperfold --help lists them).\n";
+        return 2;
+    }
 
     const QString lang = parser.isSet(QStringLiteral("lang"))
                              ? parser.value(QStringLiteral("lang"))

@@ -46,6 +46,15 @@ void printUsage(QTextStream& out) {
 
 namespace {
 
+constexpr std::string_view kCommands[] = {"simulate", "export",  "render",  "replay", "stability",
+                                          "fidelity", "figures", "crumple", "bench"};
+
+bool isCommand(std::string_view word) {
+    for (std::string_view c : kCommands)
+        if (word == c) return true;
+    return false;
+}
+
 // The editor takes options (--lang, --help-all, ...) and a .paper file; any other first
 // word must be a command, so a typo gets an error instead of an editor window.
 bool startsEditor(int argc, char* argv[]) {
@@ -55,11 +64,31 @@ bool startsEditor(int argc, char* argv[]) {
     return first.starts_with('-') || first.ends_with(".paper");
 }
 
+// A command after the editor's options ("paperfold --lang ko simulate ..."): it opened
+// no editor (there was no display to open it on) and ran nothing. The word itself.
+std::string_view commandAfterEditorOptions(int argc, char* argv[]) {
+    for (int k = 1; k < argc; ++k)
+        if (isCommand(argv[k])) return argv[k];
+    return {};
+}
+
 } // namespace
 
 int main(int argc, char* argv[]) {
     // No command (or only editor options and a file): the desktop editor.
-    if (startsEditor(argc, argv)) return pf::runEditor(argc, argv);
+    if (startsEditor(argc, argv)) {
+        if (const std::string_view command = commandAfterEditorOptions(argc, argv);
+            !command.empty()) {
+            QTextStream(stderr) << "paperfold: '"
+                                << QByteArray(command.data(), qsizetype(command.size()))
+                                << "' must come first; the options before it are the editor's, and "
+                                   "the commands speak English (paperfold "
+                                << QByteArray(command.data(), qsizetype(command.size()))
+                                << " --help lists its options)\n";
+            return 1;
+        }
+        return pf::runEditor(argc, argv);
+    }
     // Rendering draws legends with fonts, which need a GUI application; the
     // offscreen platform gives one with no display at all.
     const std::string_view command = argc >= 2 ? argv[1] : "";

@@ -265,6 +265,41 @@ class TestSimulateCli : public QObject {
         QVERIFY(r.out.isEmpty());
     }
 
+    // --help-all is listed by every command's --help: it ran the command instead (figures
+    // and crumple wrote over their output folders). --help and --version need no display,
+    // and a command after the editor's options is named, not taken for the editor.
+    void helpAndVersionPrintAndRunNothing() {
+        for (const char* command : {"figures", "crumple"}) {
+            QTemporaryDir dir;
+            const Result r =
+                runPaperfold({command, "--help-all", "--output-dir", dir.path()}, true);
+            QCOMPARE(r.exitCode, 0);
+            QVERIFY2(r.out.contains("Usage:"), r.out.constData());
+            QVERIFY2(QDir(dir.path()).isEmpty(), command);
+        }
+        const Result simulate = runPaperfold({"simulate", "--help-all"}, true);
+        QCOMPARE(simulate.exitCode, 0);
+        QVERIFY2(simulate.out.startsWith("Usage:"), simulate.out.constData()); // not a run
+        for (const char* ask : {"--version", "--help"}) {
+            const Result r = runPaperfold({ask}, true);
+            QCOMPARE(r.exitCode, 0);
+            QVERIFY2(r.out.contains(ask == QLatin1String("--version") ? "PaperFold" : "commands:"),
+                     r.out.constData());
+        }
+        const Result late = runPaperfold({"--lang", "ko", "simulate", "--steps", "1"}, true);
+        QCOMPARE(late.exitCode, 1);
+        QVERIFY2(late.err.contains("'simulate' must come first"), late.err.constData());
+        QVERIFY(late.out.isEmpty());
+    }
+
+    // The editor on a platform with no OpenGL made its window and crashed in the first
+    // paint (SIGSEGV); it says why and ends.
+    void theEditorWithoutOpenGlSaysSo() {
+        const Result r = runPaperfold({}, false, {"QT_QPA_PLATFORM=offscreen"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("gives no OpenGL context"), r.err.constData());
+    }
+
     void saveThenLoadResumesExactly() {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("half.paper"));
