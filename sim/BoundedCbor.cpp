@@ -81,10 +81,15 @@ class BoundedReader {
                                                                    : QCborValue(qint64(u));
         }
         case QCborStreamReader::NegativeInteger: {
-            const quint64 n = quint64(reader_.toNegativeInteger()); // the value is -1 - n
+            // Qt gives the value's magnitude (5 for -5; 0 for -2⁶⁴), not the n of CBOR's
+            // -1 - n: read as -1 - n, every negative integer in a file came one too low.
+            const quint64 n = quint64(reader_.toNegativeInteger());
             reader_.next();
-            return n > quint64(std::numeric_limits<qint64>::max()) ? QCborValue(-1.0 - double(n))
-                                                                   : QCborValue(-1 - qint64(n));
+            constexpr quint64 kLargest = quint64(std::numeric_limits<qint64>::max());
+            if (n == 0) return QCborValue(-18446744073709551616.0);
+            if (n <= kLargest) return QCborValue(-qint64(n));
+            if (n == kLargest + 1) return QCborValue(std::numeric_limits<qint64>::min());
+            return QCborValue(-double(n));
         }
         case QCborStreamReader::ByteArray: {
             QByteArray b;

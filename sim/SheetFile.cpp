@@ -556,7 +556,11 @@ World worldFromCbor(const QCborMap& root) {
     for (int k = 0; k < 4; ++k) state[k] = u64From(rng, 8 * k);
     if (!world.rng.setState(state)) fail(QStringLiteral("file.rng: the all-zero state is invalid"));
     world.time = realAt(root, "time", w, 0.0, 1e12);
-    world.stepCount = integerAt(root, "step", w, 0, std::numeric_limits<qint64>::max());
+    // Far more steps than any session takes (a million years at 240 a second), and far
+    // enough from the largest integer that stepping on never overflows (a file at
+    // 2⁶³ − 1 was stepped to -2⁶³ + 2 and then refused its own save).
+    constexpr qint64 kLargestStep = qint64(1) << 53;
+    world.stepCount = integerAt(root, "step", w, 0, kLargestStep);
     world.params = paramsFromCbor(mapAt(root, "params", w));
 
     const QCborMap sphere = mapAt(root, "sphere", w);

@@ -1,4 +1,5 @@
 // .paper files: exact round trip, exact resume, and refusal of every kind of bad file.
+#include "BoundedCbor.h"
 #include "Breaking.h"
 #include "EditSession.h"
 #include "JacobiScene.h"
@@ -19,6 +20,7 @@
 #include <bit>
 #include <cstring>
 #include <functional>
+#include <limits>
 
 using namespace pf;
 
@@ -254,6 +256,43 @@ class TestSheetFile : public QObject {
         }
         QVERIFY(card.thickness != Material{}.thickness);
         QVERIFY(card.paperStaticFriction != Material{}.paperStaticFriction);
+    }
+
+    // Negative integers are read as written: Qt gives a CBOR negative integer's
+    // magnitude, and read as CBOR's "-1 - n" a gravity of -5 written as an integer (by
+    // hand, or by another program) loaded as -6, and a step of -1 was refused as -2.
+    void negativeIntegersAreReadAsWritten() {
+        QCborMap root = QCborValue::fromCbor(encodeWorld(*makeScene("press"))).toMap();
+        QCborMap params = root[QLatin1String("params")].toMap();
+        params[QLatin1String("gravity")] = qint64(-5);
+        root[QLatin1String("params")] = params;
+        QCborMap ground = root[QLatin1String("ground")].toMap();
+        ground[QLatin1String("height")] = qint64(-1);
+        root[QLatin1String("ground")] = ground;
+        const WorldLoad l = decodeWorld(QCborValue(root).toCbor());
+        QVERIFY2(l.world, qPrintable(l.error));
+        QCOMPARE(l.world->params.gravity, -5.0);
+        QCOMPARE(l.world->groundHeight, -1.0);
+        root[QLatin1String("step")] = qint64(-1);
+        const WorldLoad bad = decodeWorld(QCborValue(root).toCbor());
+        QVERIFY(!bad.world);
+        QVERIFY2(bad.error.contains(QLatin1String(": -1 is outside")), qPrintable(bad.error));
+        // The extremes: -2⁶³ as an integer, -2⁶⁴ (CBOR's most negative) as a number.
+        CborBounds bounds;
+        QString error;
+        const auto least = parseBoundedCbor(QCborValue(std::numeric_limits<qint64>::min()).toCbor(),
+                                            bounds, &error);
+        QVERIFY2(least, qPrintable(error));
+        QCOMPARE(least->toInteger(), std::numeric_limits<qint64>::min());
+        const auto most =
+            parseBoundedCbor(QByteArray::fromHex("3bffffffffffffffff"), bounds, &error);
+        QVERIFY2(most, qPrintable(error));
+        QCOMPARE(most->toDouble(), -18446744073709551616.0);
+        // A step near the largest integer overflowed as the sheet stepped on.
+        root[QLatin1String("step")] = std::numeric_limits<qint64>::max();
+        const WorldLoad late = decodeWorld(QCborValue(root).toCbor());
+        QVERIFY(!late.world);
+        QVERIFY2(late.error.contains(QLatin1String("file.step")), qPrintable(late.error));
     }
 
     // A sheet saved before breaks followed loading has no peak contractions: it counts
