@@ -16,6 +16,8 @@
 #include <QLocale>
 #include <QTextStream>
 #include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string_view>
 #include <sys/stat.h>
@@ -72,6 +74,24 @@ std::string_view commandAfterEditorOptions(int argc, char* argv[]) {
     return {};
 }
 
+int runCommand(const QStringList& args, QTextStream& err) {
+    try {
+        if (args[1] == QLatin1String("simulate")) return pf::cli::runSimulate(args);
+        if (args[1] == QLatin1String("export")) return pf::cli::runExport(args);
+        if (args[1] == QLatin1String("render")) return pf::cli::runRender(args);
+        if (args[1] == QLatin1String("replay")) return pf::cli::runReplay(args);
+        if (args[1] == QLatin1String("stability")) return pf::cli::runStability(args);
+        if (args[1] == QLatin1String("bench")) return pf::cli::runBench(args);
+        if (args[1] == QLatin1String("fidelity")) return pf::cli::runFidelity(args);
+        if (args[1] == QLatin1String("figures")) return pf::cli::runFigures(args);
+        if (args[1] == QLatin1String("crumple")) return pf::cli::runCrumple(args);
+        throw pf::cli::UsageError{QStringLiteral("unknown command '%1'").arg(args[1])};
+    } catch (const pf::cli::UsageError& e) {
+        err << "paperfold: " << e.message << '\n';
+        return 1;
+    }
+}
+
 } // namespace
 
 int main(int argc, char* argv[]) {
@@ -118,19 +138,12 @@ int main(int argc, char* argv[]) {
         printUsage(out);
         return 0;
     }
-    try {
-        if (args[1] == QLatin1String("simulate")) return pf::cli::runSimulate(args);
-        if (args[1] == QLatin1String("export")) return pf::cli::runExport(args);
-        if (args[1] == QLatin1String("render")) return pf::cli::runRender(args);
-        if (args[1] == QLatin1String("replay")) return pf::cli::runReplay(args);
-        if (args[1] == QLatin1String("stability")) return pf::cli::runStability(args);
-        if (args[1] == QLatin1String("bench")) return pf::cli::runBench(args);
-        if (args[1] == QLatin1String("fidelity")) return pf::cli::runFidelity(args);
-        if (args[1] == QLatin1String("figures")) return pf::cli::runFigures(args);
-        if (args[1] == QLatin1String("crumple")) return pf::cli::runCrumple(args);
-        throw pf::cli::UsageError{QStringLiteral("unknown command '%1'").arg(args[1])};
-    } catch (const pf::cli::UsageError& e) {
-        err << "paperfold: " << e.message << '\n';
-        return 1;
+    const int code = runCommand(args, err);
+    // What a command printed (the statistics of --stats, a table) is its result: lost to a
+    // full disk or a closed output, the command has failed (it said nothing, exit 0).
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        err << "paperfold: the output could not be written (" << std::strerror(errno) << ")\n";
+        return code != 0 ? code : 2;
     }
+    return code;
 }

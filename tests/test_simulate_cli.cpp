@@ -292,6 +292,21 @@ class TestSimulateCli : public QObject {
         QVERIFY(late.out.isEmpty());
     }
 
+    // --stats' statistics are the run's result: printed to a full disk they were lost and
+    // the command said nothing, exit 0.
+    void statisticsThatCannotBeWrittenFailTheCommand() {
+        if (!QFile::exists(QStringLiteral("/dev/full"))) QSKIP("no /dev/full here");
+        QProcess p;
+        p.setStandardOutputFile(QStringLiteral("/dev/full"));
+        p.start(QStringLiteral(PAPERFOLD_EXE), {"simulate", "--scene", "press", "--steps", "1",
+                                                "--integrator", "jacobi", "--stats"});
+        QVERIFY(p.waitForFinished(120000 * PAPERFOLD_TEST_SLOWDOWN));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 2);
+        const QByteArray err = p.readAllStandardError();
+        QVERIFY2(err.contains("the output could not be written"), err.constData());
+    }
+
     // The editor on a platform with no OpenGL made its window and crashed in the first
     // paint (SIGSEGV); it says why and ends.
     void theEditorWithoutOpenGlSaysSo() {
