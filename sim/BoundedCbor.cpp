@@ -25,6 +25,15 @@ class BoundedReader {
             if (error) *error = problem_.isEmpty() ? readerProblem() : problem_;
             return std::nullopt;
         }
+        // One document per file: bytes after it were read without a word (a sheet padded
+        // with 500 MB of zeros loaded, and held the memory to read them).
+        if (const qint64 after = size_ - reader_.currentOffset(); after > 0) {
+            if (error)
+                *error = QStringLiteral("the file goes on for %1 bytes after its data ends (two "
+                                        "files joined, or something appended?)")
+                             .arg(after);
+            return std::nullopt;
+        }
         return root;
     }
 

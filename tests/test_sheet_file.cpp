@@ -258,6 +258,19 @@ class TestSheetFile : public QObject {
         QVERIFY(card.paperStaticFriction != Material{}.paperStaticFriction);
     }
 
+    // A file is one sheet: bytes after it (two files joined, zeros appended) were read
+    // without a word, and a sheet padded with 500 MB of zeros loaded.
+    void bytesAfterTheSheetAreRefused() {
+        const QByteArray sheet = encodeWorld(*makeScene("press"));
+        QVERIFY(decodeWorld(sheet).world);
+        for (const QByteArray& more : {QByteArray(2, '\0'), sheet}) {
+            const WorldLoad l = decodeWorld(sheet + more);
+            QVERIFY(!l.world);
+            QVERIFY2(l.error.contains(QStringLiteral("goes on for %1 bytes").arg(more.size())),
+                     qPrintable(l.error));
+        }
+    }
+
     // Negative integers are read as written: Qt gives a CBOR negative integer's
     // magnitude, and read as CBOR's "-1 - n" a gravity of -5 written as an integer (by
     // hand, or by another program) loaded as -6, and a step of -1 was refused as -2.
