@@ -287,6 +287,13 @@ QString textAt(const QCborMap& m, const char* key, const QString& where, qsizety
     if (!v.isString()) fail(QStringLiteral("%1.%2: missing or not text").arg(where, key));
     const QString s = v.toString();
     if (s.size() > maxLength) fail(QStringLiteral("%1.%2: text too long").arg(where, key));
+    // Names, which the commands print and the editor shows: a scene named "\n\x1b[31m"
+    // was printed raw to the terminal.
+    for (QChar c : s)
+        if (c.category() == QChar::Other_Control)
+            fail(QStringLiteral("%1.%2: a control character (U+%3) in the text")
+                     .arg(where, key)
+                     .arg(c.unicode(), 4, 16, QLatin1Char('0')));
     return s;
 }
 

@@ -271,6 +271,19 @@ class TestSheetFile : public QObject {
         }
     }
 
+    // The names a file holds are shown and printed: a scene named with a terminal's
+    // escape sequence was printed raw by `simulate`.
+    void controlCharactersInANameAreRefused() {
+        QCborMap root = QCborValue::fromCbor(encodeWorld(*makeScene("press"))).toMap();
+        root[QLatin1String("scene")] = QStringLiteral("press\n\x1b[31mred");
+        const WorldLoad l = decodeWorld(QCborValue(root).toCbor());
+        QVERIFY(!l.world);
+        QVERIFY2(l.error.contains(QLatin1String("file.scene: a control character (U+000a)")),
+                 qPrintable(l.error));
+        root[QLatin1String("scene")] = QStringLiteral("pressé 紙");
+        QVERIFY(decodeWorld(QCborValue(root).toCbor()).world);
+    }
+
     // Negative integers are read as written: Qt gives a CBOR negative integer's
     // magnitude, and read as CBOR's "-1 - n" a gravity of -5 written as an integer (by
     // hand, or by another program) loaded as -6, and a step of -1 was refused as -2.
