@@ -132,6 +132,15 @@ std::optional<std::array<float, 3>> paperColorFromText(const QString& text, QStr
                          .arg(text);
         return std::nullopt;
     }
+    // Paper is opaque: "transparent" (QColor's name for black with no alpha) and
+    // #aarrggbb were taken, their alpha dropped, as black or another colour.
+    if (c.alpha() != 255) {
+        if (error)
+            *error = QStringLiteral("'%1' is not opaque: paper is; use #rrggbb or a name such as "
+                                    "ivory")
+                         .arg(text);
+        return std::nullopt;
+    }
     return std::array<float, 3>{static_cast<float>(c.redF()), static_cast<float>(c.greenF()),
                                 static_cast<float>(c.blueF())};
 }

@@ -522,6 +522,12 @@ class TestSimulateCli : public QObject {
             << "glitter";
         QTest::newRow("bad paper colour")
             << QStringList{"render", "--paper-color", "glitter", "--output", "a.png"} << "glitter";
+        QTest::newRow("see-through paper colour")
+            << QStringList{"render", "--paper-color", "transparent", "--output", "a.png"}
+            << "'transparent' is not opaque";
+        QTest::newRow("paper colour with alpha")
+            << QStringList{"render", "--paper-color", "#80ff0000", "--output", "a.png"}
+            << "not opaque";
         QTest::newRow("missing texture")
             << QStringList{"render", "--texture", "/nonexistent/paper.png", "--output", "a.png"}
             << "--texture";
