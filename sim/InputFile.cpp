@@ -9,6 +9,11 @@
 namespace pf {
 
 std::optional<QByteArray> readInputFile(const QString& path, qint64 maxBytes, QString* error) {
+    // (QFile warns on stderr, in its own words, before it fails on an empty name.)
+    if (path.isEmpty()) {
+        *error = QStringLiteral("no file named (the name is empty)");
+        return std::nullopt;
+    }
     const QString notRegular =
         QStringLiteral("%1 is not a regular file (a device, FIFO or folder)");
     struct stat before {};

@@ -236,6 +236,10 @@ class TestSimulateCli : public QObject {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("mentions");
         QTest::newRow("unknown scene") << QStringList{"simulate", "--scene", "nope"} << "nope";
+        QTest::newRow("a sheet with no name")
+            << QStringList{"simulate", "--load", ""} << "the name is empty";
+        QTest::newRow("a recording with no name")
+            << QStringList{"replay", ""} << "the name is empty";
         QTest::newRow("phi out of range") << QStringList{"simulate", "--phi", "1.5"} << "phi";
         QTest::newRow("psi not a number") << QStringList{"simulate", "--psi", "abc"} << "psi";
         QTest::newRow("negative steps") << QStringList{"simulate", "--steps", "-4"} << "steps";
