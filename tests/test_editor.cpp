@@ -2384,6 +2384,37 @@ class TestEditor : public QObject {
         checkReplay(*window, nextFile, lastError);
     }
 
+    // "Folding: …" stands until the fold ends, however long it is carried: behind real
+    // time a tissue fold took 15 s, and after 8 s the readouts stood in its place.
+    void theFoldingMessageStandsUntilTheFoldEnds() {
+        inJacobiWhenSanitized();
+        Viewport* view = window->viewport();
+        window->action("tool.fold")->trigger();
+        window->action("play")->setChecked(true);
+        const QPoint from = pixelNear(*window, Vec3(-0.09, 0.0, 0.0));
+        const QPoint to = pixelNear(*window, Vec3(0.09, 0.0, 0.0));
+        QVERIFY(!from.isNull() && !to.isNull());
+        QueuedSignalSpy answered(window->simulation(), &SimulationThread::foldAnswered);
+        QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        moveMouse(view, from);
+        QTest::mousePress(view, Qt::LeftButton, {}, from);
+        moveMouse(view, to, Qt::LeftButton);
+        QTest::mouseRelease(view, Qt::LeftButton, {}, to);
+        QVERIFY(waitForCount(answered, 1));
+        QCOMPARE(answered.last().at(0).toInt(), int(FoldRefusal::None));
+        // Held mid-fold by a pause (a fold carried slowly), longer than a message stands.
+        window->action("play")->setChecked(false);
+        const QString folding = QStringLiteral("Folding: the paper is carried");
+        QVERIFY(window->statusBar()->currentMessage().startsWith(folding));
+        QTest::qWait(8500);
+        QVERIFY2(window->statusBar()->currentMessage().startsWith(folding),
+                 qPrintable(window->statusBar()->currentMessage()));
+        for (int s = 0; s < 1200 && recorded.count() == 0; ++s) window->simulation()->stepOnce();
+        window->simulation()->sync();
+        QVERIFY(waitForCount(recorded, 1));
+        QTRY_VERIFY(!window->statusBar()->currentMessage().startsWith(folding));
+    }
+
     // A fold whose crease does not hold its flap says so a second after the let-go: the
     // status bar said "the crease keeps it" at every let-go, also for a third fold
     // along the diagonal of a sheet folded twice, which sprang back 99°.

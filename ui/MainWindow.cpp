@@ -289,6 +289,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         if (refusal == int(FoldRefusal::None) && !playing_)
             statusBar()->showMessage(tr("Paused: the fold waits. Space plays and carries the "
                                         "paper round the line; Ctrl+. steps."));
+        else if (refusal == int(FoldRefusal::None))
+            // Until the fold ends (setEditUnderWay): carried behind real time, a tissue
+            // fold took 15 s, and after 8 the readouts stood where "Folding…" had been.
+            statusBar()->showMessage(foldAnswerText(FoldRefusal::None));
         else
             statusBar()->showMessage(foldAnswerText(static_cast<FoldRefusal>(refusal)), 8000);
         if (refusal == int(FoldRefusal::None)) setEditUnderWay(true, settleUnderWay_);
@@ -768,6 +772,9 @@ void MainWindow::showReadouts(const SimulationStatus& st) {
 }
 
 void MainWindow::setEditUnderWay(bool folding, bool settling) {
+    if (foldUnderWay_ && !folding &&
+        statusBar()->currentMessage() == foldAnswerText(FoldRefusal::None))
+        statusBar()->clearMessage();
     foldUnderWay_ = folding;
     settleUnderWay_ = settling;
     gateUndo();
