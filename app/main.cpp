@@ -16,6 +16,7 @@
 #include <QLocale>
 #include <QTextStream>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -95,6 +96,10 @@ int runCommand(const QStringList& args, QTextStream& err) {
 } // namespace
 
 int main(int argc, char* argv[]) {
+    // A file-size limit (ulimit -f) killed the process mid-write with SIGXFSZ, with no
+    // message and its temporary file left; ignored, the write fails with EFBIG, and the
+    // writer says so and removes what it began.
+    std::signal(SIGXFSZ, SIG_IGN);
     // No command (or only editor options and a file): the desktop editor.
     if (startsEditor(argc, argv)) {
         if (const std::string_view command = commandAfterEditorOptions(argc, argv);

@@ -16,6 +16,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QThread>
+#include <sys/resource.h>
 
 namespace {
 
@@ -309,6 +310,40 @@ class TestSimulateCli : public QObject {
         QCOMPARE(p.exitCode(), 2);
         const QByteArray err = p.readAllStandardError();
         QVERIFY2(err.contains("the output could not be written"), err.constData());
+    }
+
+    // Under a file-size limit (ulimit -f) the process was killed mid-write by SIGXFSZ,
+    // with no message and its temporary file left beside the one it was to replace.
+    void aFileSizeLimitFailsTheSaveAndLeavesNothing() {
+        QTemporaryDir dir;
+        const QString kept = dir.filePath(QStringLiteral("keep.paper"));
+        QCOMPARE(runPaperfold({"simulate", "--scene", "press", "--steps", "0", "--integrator",
+                               "jacobi", "--resolution", "5", "--save", kept})
+                     .exitCode,
+                 0);
+        const QByteArray before = [&] {
+            QFile f(kept);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        }();
+        QVERIFY(!before.isEmpty());
+        QProcess p;
+        p.setChildProcessModifier([] {
+            const rlimit limit{20 * 1024, 20 * 1024};
+            setrlimit(RLIMIT_FSIZE, &limit);
+        });
+        p.start(QStringLiteral(PAPERFOLD_EXE),
+                {"simulate", "--scene", "press", "--steps", "1", "--integrator", "jacobi",
+                 "--resolution", "20", "--save", kept});
+        QVERIFY(p.waitForFinished(120000 * PAPERFOLD_TEST_SLOWDOWN));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit); // not killed by a signal
+        QVERIFY(p.exitCode() != 0);
+        const QByteArray err = p.readAllStandardError();
+        QVERIFY2(err.contains("File too large"), err.constData());
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+                 QStringList{QStringLiteral("keep.paper")});
+        QFile f(kept);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), before);
     }
 
     // The editor on a platform with no OpenGL made its window and crashed in the first
