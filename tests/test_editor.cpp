@@ -461,6 +461,38 @@ class TestEditor : public QObject {
         QCOMPARE(settledStatus(*window).breaks, after.breaks);
     }
 
+    // A push that moves nothing says so: a user pushed a sheet pinned all round, saw
+    // nothing move and nothing in the History, and read nothing of why.
+    void aPushThatMovesNothingSaysSo() {
+        window->action("tool.push")->trigger();
+        window->action("play")->setChecked(true);
+        Viewport* view = window->viewport();
+        const QString said = QStringLiteral("This push moved nothing");
+        QueuedSignalSpy nothing(window->simulation(), &SimulationThread::pushMovedNothing);
+        // On the bare desk, far from the sheet.
+        QPoint p(30, view->height() - 30);
+        const auto hit = pickAt(*window, p);
+        QVERIFY(hit && !hit->onSheet);
+        moveMouse(view, p);
+        QTest::mousePress(view, Qt::LeftButton, {}, p);
+        for (int k = 0; k < 5; ++k) {
+            p += QPoint(6, 0);
+            moveMouse(view, p, Qt::LeftButton);
+            QTest::qWait(20);
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+        QVERIFY(waitForCount(nothing, 1));
+        QTRY_VERIFY2(window->statusBar()->currentMessage().startsWith(said),
+                     qPrintable(window->statusBar()->currentMessage()));
+        // Across the sheet, it moves the paper: a step in the History, and nothing said.
+        window->statusBar()->clearMessage();
+        QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        pushAcross(*window);
+        QVERIFY(waitForCount(recorded, 1));
+        QCOMPARE(nothing.count(), 1);
+        QVERIFY(!window->statusBar()->currentMessage().startsWith(said));
+    }
+
     // While the mouse holds the paper (Push or Grab), the step it is making is not in the
     // History yet: Ctrl+Z undid the step before it and took the held push's breaks with
     // it, and a redo the session refused still moved the History. So Undo, Redo and the

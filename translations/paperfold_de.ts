@@ -668,6 +668,10 @@
         <source>The pins hold this paper taut: the hand pulls it with at most %1 N, as a pinch does before paper slips from it, and paper does not stretch to follow.</source>
         <translation>Die Anheftungen halten dieses Papier straff: Die Hand zieht mit höchstens %1 N, wie ein Fingergriff, bevor Papier aus ihm rutscht, und Papier dehnt sich nicht, um ihr zu folgen.</translation>
     </message>
+    <message>
+        <source>This push moved nothing: the tool slides over paper it cannot move, such as paper that pins hold all round. Push where the paper is free, or unpin it.</source>
+        <translation>Dieses Drücken hat nichts bewegt: Das Werkzeug gleitet über Papier, das es nicht bewegen kann, etwa Papier, das ringsum angeheftet ist. Drücken Sie dort, wo das Papier frei ist, oder lösen Sie die Anheftungen.</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

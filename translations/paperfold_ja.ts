@@ -663,6 +663,10 @@
         <source>The pins hold this paper taut: the hand pulls it with at most %1 N, as a pinch does before paper slips from it, and paper does not stretch to follow.</source>
         <translation>ピン留めがこの紙をぴんと張っています。手は最大 %1 N で引きます（それを超えると、つまんだ紙は指から滑ります）。紙は伸びてついて来ません。</translation>
     </message>
+    <message>
+        <source>This push moved nothing: the tool slides over paper it cannot move, such as paper that pins hold all round. Push where the paper is free, or unpin it.</source>
+        <translation>この押し操作では何も動きませんでした。ツールは動かせない紙（周囲をピン留めされた紙など）の上を滑ります。紙が自由な所を押すか、ピン留めを外してください。</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -158,6 +158,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                 if (kind == static_cast<int>(EditSession::StrokeKind::Fold))
                     statusBar()->showMessage(tr("Folded. Edit ▸ Undo unfolds the paper."), 5000);
             });
+    // A user pushed a sheet pinned at its four corners, saw nothing happen and nothing
+    // in the History, and read nothing of why. (Paused, the press already said so.)
+    connect(sim_.get(), &SimulationThread::pushMovedNothing, this, [this] {
+        if (playing_)
+            statusBar()->showMessage(
+                tr("This push moved nothing: the tool slides over paper it cannot move, such "
+                   "as paper that pins hold all round. Push where the paper is free, or unpin "
+                   "it."),
+                8000);
+    });
     auto* history = new StrokeHistory(sim_.get(), undo_, this);
     connect(history, &StrokeHistory::renamed, undoView_->viewport(), qOverload<>(&QWidget::update));
     connect(history, &StrokeHistory::said, this,

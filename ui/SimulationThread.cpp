@@ -43,6 +43,7 @@ void SimulationThread::forwardWorkerSignals() {
             Qt::DirectConnection);
     };
     forward(&SimulationWorker::strokeRecorded, &SimulationThread::strokeRecorded);
+    forward(&SimulationWorker::pushMovedNothing, &SimulationThread::pushMovedNothing);
     forward(&SimulationWorker::strokeRecounted, &SimulationThread::strokeRecounted);
     forward(&SimulationWorker::strokeUndoRefused, &SimulationThread::strokeUndoRefused);
     forward(&SimulationWorker::strokeRedoRefused, &SimulationThread::strokeRedoRefused);

@@ -84,6 +84,9 @@ class SimulationThread : public QObject {
     // it can be undone as one step. `kind` is an EditSession::StrokeKind; `events` the
     // breaks and hinges it made, or the vertices it (un)pinned.
     void strokeRecorded(int stroke, int events, int kind);
+    // A push let go that changed nothing (no step to undo): the tool slid over paper it
+    // could not move, or touched none.
+    void pushMovedNothing();
     // A step's breaks and hinges now count `events`: it took what the sheet broke
     // settling after it, or gave back what a later step's redo took back.
     void strokeRecounted(int stroke, int events);

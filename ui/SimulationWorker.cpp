@@ -72,7 +72,9 @@ void SimulationWorker::replaceWorld(const World& world) {
 void SimulationWorker::setTool(const Vec3& target, double radius, bool visible, bool pressed) {
     editedSinceShown_ = true;
     const SphereTool before = session_.world().sphere;
-    announce(session_.setTool(target, radius, visible, pressed));
+    const auto ended = session_.setTool(target, radius, visible, pressed);
+    announce(ended);
+    if (before.active && !pressed && !ended) emit pushMovedNothing();
     // Paused, a frame is published only when the tool moves: one that appears under the
     // cursor (where it is put at once), goes or is pressed is shown now.
     const SphereTool& after = session_.world().sphere;

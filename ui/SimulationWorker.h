@@ -54,6 +54,9 @@ class SimulationWorker : public QObject {
     void published(std::shared_ptr<const pf::SheetSnapshot> snapshot,
                    const pf::SimulationStatus& status);
     void strokeRecorded(int stroke, int events, int kind);
+    // A push let go that changed nothing (no step to undo): the tool slid over paper it
+    // could not move, or touched none.
+    void pushMovedNothing();
     // A step's breaks and hinges now count `events` (EditSession::takeRecounted).
     void strokeRecounted(int stroke, int events);
     // The session refused an undo or a redo of `stroke` (EditSession::undoStroke): the
