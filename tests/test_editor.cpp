@@ -98,6 +98,7 @@ QPoint viewportCentre(MainWindow& w) {
 }
 
 void moveMouse(QWidget* view, const QPoint& p, Qt::MouseButtons buttons = Qt::NoButton);
+QPoint dragWhilePlaying(QWidget* view, QPoint p, const QPoint& move, int moves, int waitMs);
 
 // One push stroke: press in the middle of the sheet, step the (paused) simulation for
 // a second while dragging across, release.
@@ -114,6 +115,20 @@ void pushAcross(MainWindow& w) {
         w.simulation()->stepOnce();
     }
     QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+}
+
+// A left-button drag of `moves` moves by `move`, `waitMs` apart, with the simulation
+// playing on its own thread meanwhile; returns where it let go.
+QPoint dragWhilePlaying(QWidget* view, QPoint p, const QPoint& move, int moves, int waitMs) {
+    moveMouse(view, p);
+    QTest::mousePress(view, Qt::LeftButton, {}, p);
+    for (int k = 0; k < moves; ++k) {
+        p += move;
+        moveMouse(view, p, Qt::LeftButton);
+        QTest::qWait(waitMs);
+    }
+    QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+    return p;
 }
 
 // Delivered synchronously: QTest::mouseMove goes through the cursor position and can
@@ -178,6 +193,21 @@ QPoint pixelNear(MainWindow& w, const Vec3& point) {
             }
         }
     return best;
+}
+
+// Draws a fold line across the sheet's middle (x from -9 to 9 cm) with the Fold tool
+// and waits for the session's answer: true if the sheet is being folded.
+bool foldAcrossTheMiddle(MainWindow& w) {
+    Viewport* view = w.viewport();
+    const QPoint from = pixelNear(w, Vec3(-0.09, 0.0, 0.0));
+    const QPoint to = pixelNear(w, Vec3(0.09, 0.0, 0.0));
+    if (from.isNull() || to.isNull()) return false;
+    QueuedSignalSpy answered(w.simulation(), &SimulationThread::foldAnswered);
+    moveMouse(view, from);
+    QTest::mousePress(view, Qt::LeftButton, {}, from);
+    moveMouse(view, to, Qt::LeftButton);
+    QTest::mouseRelease(view, Qt::LeftButton, {}, to);
+    return waitForCount(answered, 1) && answered.last().at(0).toInt() == int(FoldRefusal::None);
 }
 
 // Every text the window shows a user, in a fixed order: actions (text and tooltip),
@@ -470,17 +500,10 @@ class TestEditor : public QObject {
         const QString said = QStringLiteral("This push moved nothing");
         QueuedSignalSpy nothing(window->simulation(), &SimulationThread::pushMovedNothing);
         // On the bare desk, far from the sheet.
-        QPoint p(30, view->height() - 30);
+        const QPoint p(30, view->height() - 30);
         const auto hit = pickAt(*window, p);
         QVERIFY(hit && !hit->onSheet);
-        moveMouse(view, p);
-        QTest::mousePress(view, Qt::LeftButton, {}, p);
-        for (int k = 0; k < 5; ++k) {
-            p += QPoint(6, 0);
-            moveMouse(view, p, Qt::LeftButton);
-            QTest::qWait(20);
-        }
-        QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+        dragWhilePlaying(view, p, QPoint(6, 0), 5, 20);
         QVERIFY(waitForCount(nothing, 1));
         QTRY_VERIFY2(window->statusBar()->currentMessage().startsWith(said),
                      qPrintable(window->statusBar()->currentMessage()));
@@ -677,15 +700,7 @@ class TestEditor : public QObject {
         Viewport* view = window->viewport();
         window->panel()->phiSlider()->setValue(30);
         window->action("play")->setChecked(true);
-        QPoint p = viewportCentre(*window) + QPoint(-60, 0);
-        moveMouse(view, p);
-        QTest::mousePress(view, Qt::LeftButton, {}, p);
-        for (int k = 0; k < 30; ++k) {
-            p += QPoint(4, 1);
-            moveMouse(view, p, Qt::LeftButton);
-            QTest::qWait(15);
-        }
-        QTest::mouseRelease(view, Qt::LeftButton, {}, p);
+        dragWhilePlaying(view, viewportCentre(*window) + QPoint(-60, 0), QPoint(4, 1), 30, 15);
         QTest::qWait(100);
         window->action("play")->setChecked(false);
         window->action("undo")->trigger();
@@ -2420,20 +2435,10 @@ class TestEditor : public QObject {
     // time a tissue fold took 15 s, and after 8 s the readouts stood in its place.
     void theFoldingMessageStandsUntilTheFoldEnds() {
         inJacobiWhenSanitized();
-        Viewport* view = window->viewport();
         window->action("tool.fold")->trigger();
         window->action("play")->setChecked(true);
-        const QPoint from = pixelNear(*window, Vec3(-0.09, 0.0, 0.0));
-        const QPoint to = pixelNear(*window, Vec3(0.09, 0.0, 0.0));
-        QVERIFY(!from.isNull() && !to.isNull());
-        QueuedSignalSpy answered(window->simulation(), &SimulationThread::foldAnswered);
         QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
-        moveMouse(view, from);
-        QTest::mousePress(view, Qt::LeftButton, {}, from);
-        moveMouse(view, to, Qt::LeftButton);
-        QTest::mouseRelease(view, Qt::LeftButton, {}, to);
-        QVERIFY(waitForCount(answered, 1));
-        QCOMPARE(answered.last().at(0).toInt(), int(FoldRefusal::None));
+        QVERIFY(foldAcrossTheMiddle(*window));
         // Held mid-fold by a pause (a fold carried slowly), longer than a message stands.
         window->action("play")->setChecked(false);
         const QString folding = QStringLiteral("Folding: the paper is carried");
@@ -2452,22 +2457,12 @@ class TestEditor : public QObject {
     // along the diagonal of a sheet folded twice, which sprang back 99°.
     void aFoldThatOpensAgainSaysSo() {
         if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
-        Viewport* view = window->viewport();
         window->action("tool.fold")->trigger();
         // Office paper folded to 60° and let go falls open under the half sheet's weight.
         window->panel()->foldAngleSpin()->setValue(60);
-        const QPoint from = pixelNear(*window, Vec3(-0.09, 0.0, 0.0));
-        const QPoint to = pixelNear(*window, Vec3(0.09, 0.0, 0.0));
-        QVERIFY(!from.isNull() && !to.isNull());
-        QueuedSignalSpy answered(window->simulation(), &SimulationThread::foldAnswered);
         QueuedSignalSpy opened(window->simulation(), &SimulationThread::foldSprangBack);
         QueuedSignalSpy opening(window->simulation(), &SimulationThread::foldOpening);
-        moveMouse(view, from);
-        QTest::mousePress(view, Qt::LeftButton, {}, from);
-        moveMouse(view, to, Qt::LeftButton);
-        QTest::mouseRelease(view, Qt::LeftButton, {}, to);
-        QVERIFY(waitForCount(answered, 1));
-        QCOMPARE(answered.last().at(0).toInt(), int(FoldRefusal::None));
+        QVERIFY(foldAcrossTheMiddle(*window));
         // Said as it opens, before the reading a second after the let-go.
         for (int s = 0; s < 1800 && opening.count() == 0; ++s) {
             window->simulation()->stepOnce();
