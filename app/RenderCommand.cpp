@@ -120,7 +120,10 @@ int runRender(const QStringList& arguments) {
     double renderSeconds = 0;
     for (int f = 0; f < count; ++f) {
         if (f > 0 && !advance(every)) {
-            err << "\npaperfold: the simulation diverged before frame " << f << '\n';
+            // Named by its file: "frame 3/10" counted from 1 and "before frame 3" from 0
+            // read as one frame apart.
+            err << "\npaperfold: the simulation diverged before " << pattern->path(f) << "; the "
+                << f << (f == 1 ? " image" : " images") << " before it are written\n";
             return 3;
         }
         const SheetSnapshot snap = f == 0 ? first : makeSnapshot(sim);

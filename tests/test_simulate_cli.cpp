@@ -891,6 +891,23 @@ class TestSimulateCli : public QObject {
             QJsonDocument::fromJson(kept.out).object()[QStringLiteral("max_stretch")].toDouble(-1);
         QVERIFY2(stretch >= 0.0 && stretch < pf::kDivergenceStretch - 1.0,
                  qPrintable(QString::number(stretch)));
+        // A sequence names the image it stopped before and keeps the ones before it
+        // ("frame 3/10" counted from 1 and "diverged before frame 3" from 0).
+        const QString pattern = dir.filePath(QStringLiteral("d%02d.png"));
+        const Result sequence = runPaperfold(
+            {"render", "--scene", "drop", "--integrator", "symplectic", "--dt", "0.05", "--frames",
+             "10", "--every", "1", "--size", "64x48", "--output", pattern});
+        QCOMPARE(sequence.exitCode, 3);
+        const QStringList written =
+            QDir(dir.path()).entryList({QStringLiteral("d*.png")}, QDir::Files, QDir::Name);
+        QVERIFY(!written.isEmpty());
+        const QString next =
+            dir.filePath(QStringLiteral("d%1.png").arg(written.size(), 2, 10, QLatin1Char('0')));
+        QVERIFY2(sequence.err.contains(QStringLiteral("diverged before %1; the %2 image")
+                                           .arg(next)
+                                           .arg(written.size())
+                                           .toUtf8()),
+                 sequence.err.constData());
     }
 };
 
