@@ -163,9 +163,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(sim_.get(), &SimulationThread::pushMovedNothing, this, [this] {
         if (playing_)
             statusBar()->showMessage(
-                tr("This push moved nothing: the tool slides over paper it cannot move, such "
-                   "as paper that pins hold all round. Push where the paper is free, or unpin "
-                   "it."),
+                tr("This push moved nothing: the tool touched no paper, or slid over paper it "
+                   "cannot move (paper that pins hold all round, say). Push where the paper is "
+                   "free, or unpin it."),
                 8000);
     });
     auto* history = new StrokeHistory(sim_.get(), undo_, this);
