@@ -101,9 +101,9 @@ std::string replay(const EditLog& log, EditSession& session,
             const int n = afterStep ? 1 : static_cast<int>(std::min<std::int64_t>(left, 1 << 20));
             if (session.advance(n) != StepStatus::Ok)
                 return "the step after " + std::to_string(session.world().stepCount) +
-                       " blew up (the sheet's state was no longer finite, or stretched past "
-                       "what paper survives), where the recorded session's did not; the sheet "
-                       "is kept as it was before that step";
+                       " blew up (its result was not finite, or flew apart), where the "
+                       "recorded session's did not; the sheet is kept as it was before that "
+                       "step";
             if (afterStep && !afterStep(session))
                 return "stopped after step " + std::to_string(session.world().stepCount);
         }

@@ -52,10 +52,10 @@ class Simulation {
     const std::vector<float>& breakProbabilities() const;
     // The sheet or its parameters were changed between steps (undo, redo, new φ).
     void sheetEdited() { probabilitiesCurrent_ = false; }
-    // Off: steps neither break nor hinge, whatever the parameters say (a settle).
     // Held, the scene's scripted motions stand still: its pinned vertices and its sphere
     // stay where they are (a Settle keeps the sheet as the user saw it).
     void holdScript(bool held) { scriptHeld_ = held; }
+    // Off: steps neither break nor hinge, whatever the parameters say (a settle).
     void allowDamage(bool allowed) {
         damageAllowed_ = allowed;
         sheetEdited();
