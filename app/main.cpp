@@ -49,13 +49,24 @@ void printUsage(QTextStream& out) {
 
 namespace {
 
-constexpr std::string_view kCommands[] = {"simulate", "export",  "render",  "replay", "stability",
-                                          "fidelity", "figures", "crumple", "bench"};
+// Every command, by the word that names it: the dispatch and the check for a command
+// misplaced after the editor's options read the same list.
+struct Command {
+    std::string_view name;
+    int (*run)(const QStringList& arguments);
+};
+constexpr Command kCommands[] = {
+    {"simulate", pf::cli::runSimulate},   {"export", pf::cli::runExport},
+    {"render", pf::cli::runRender},       {"replay", pf::cli::runReplay},
+    {"stability", pf::cli::runStability}, {"bench", pf::cli::runBench},
+    {"fidelity", pf::cli::runFidelity},   {"figures", pf::cli::runFigures},
+    {"crumple", pf::cli::runCrumple},
+};
 
-bool isCommand(std::string_view word) {
-    for (std::string_view c : kCommands)
-        if (word == c) return true;
-    return false;
+const Command* commandNamed(std::string_view word) {
+    for (const Command& c : kCommands)
+        if (word == c.name) return &c;
+    return nullptr;
 }
 
 // The editor takes options (--lang, --help-all, ...) and a .paper file; any other first
@@ -71,21 +82,15 @@ bool startsEditor(int argc, char* argv[]) {
 // no editor (there was no display to open it on) and ran nothing. The word itself.
 std::string_view commandAfterEditorOptions(int argc, char* argv[]) {
     for (int k = 1; k < argc; ++k)
-        if (isCommand(argv[k])) return argv[k];
+        if (commandNamed(argv[k])) return argv[k];
     return {};
 }
 
 int runCommand(const QStringList& args, QTextStream& err) {
     try {
-        if (args[1] == QLatin1String("simulate")) return pf::cli::runSimulate(args);
-        if (args[1] == QLatin1String("export")) return pf::cli::runExport(args);
-        if (args[1] == QLatin1String("render")) return pf::cli::runRender(args);
-        if (args[1] == QLatin1String("replay")) return pf::cli::runReplay(args);
-        if (args[1] == QLatin1String("stability")) return pf::cli::runStability(args);
-        if (args[1] == QLatin1String("bench")) return pf::cli::runBench(args);
-        if (args[1] == QLatin1String("fidelity")) return pf::cli::runFidelity(args);
-        if (args[1] == QLatin1String("figures")) return pf::cli::runFigures(args);
-        if (args[1] == QLatin1String("crumple")) return pf::cli::runCrumple(args);
+        const QByteArray word = args[1].toUtf8();
+        if (const Command* c = commandNamed({word.constData(), std::size_t(word.size())}))
+            return c->run(args);
         throw pf::cli::UsageError{QStringLiteral("unknown command '%1'").arg(args[1])};
     } catch (const pf::cli::UsageError& e) {
         err << "paperfold: " << e.message << '\n';
@@ -104,12 +109,11 @@ int main(int argc, char* argv[]) {
     if (startsEditor(argc, argv)) {
         if (const std::string_view command = commandAfterEditorOptions(argc, argv);
             !command.empty()) {
-            QTextStream(stderr) << "paperfold: '"
-                                << QByteArray(command.data(), qsizetype(command.size()))
+            const QByteArray name(command.data(), qsizetype(command.size()));
+            QTextStream(stderr) << "paperfold: '" << name
                                 << "' must come first; the options before it are the editor's, and "
                                    "the commands speak English (paperfold "
-                                << QByteArray(command.data(), qsizetype(command.size()))
-                                << " --help lists its options)\n";
+                                << name << " --help lists its options)\n";
             return 1;
         }
         return pf::runEditor(argc, argv);

@@ -168,12 +168,11 @@ StepStatus Simulation::step() {
 
     // Paper drawn taut stopped the tool short of where it was asked to go: it stays
     // there, and the next step's move sets off from there.
-    if (integrator_->resolvesContacts())
-        if (const auto held = integrator_->toolHeldAt()) {
-            const Vec3 start = w.sphere.center - w.sphere.velocity * p.dt;
-            w.sphere.center = *held;
-            w.sphere.velocity = (*held - start) / p.dt;
-        }
+    if (const auto held = integrator_->toolHeldAt()) {
+        const Vec3 start = w.sphere.center - w.sphere.velocity * p.dt;
+        w.sphere.center = *held;
+        w.sphere.velocity = (*held - start) / p.dt;
+    }
 
     // A sheet at rest is not being loaded, so it does not break: Eq. 10 would otherwise
     // keep drawing on edges left compressed where the sheet came to rest.

@@ -98,7 +98,6 @@ QPoint viewportCentre(MainWindow& w) {
 }
 
 void moveMouse(QWidget* view, const QPoint& p, Qt::MouseButtons buttons = Qt::NoButton);
-QPoint dragWhilePlaying(QWidget* view, QPoint p, const QPoint& move, int moves, int waitMs);
 
 // One push stroke: press in the middle of the sheet, step the (paused) simulation for
 // a second while dragging across, release.
@@ -118,8 +117,8 @@ void pushAcross(MainWindow& w) {
 }
 
 // A left-button drag of `moves` moves by `move`, `waitMs` apart, with the simulation
-// playing on its own thread meanwhile; returns where it let go.
-QPoint dragWhilePlaying(QWidget* view, QPoint p, const QPoint& move, int moves, int waitMs) {
+// playing on its own thread meanwhile.
+void dragWhilePlaying(QWidget* view, QPoint p, const QPoint& move, int moves, int waitMs) {
     moveMouse(view, p);
     QTest::mousePress(view, Qt::LeftButton, {}, p);
     for (int k = 0; k < moves; ++k) {
@@ -128,7 +127,6 @@ QPoint dragWhilePlaying(QWidget* view, QPoint p, const QPoint& move, int moves, 
         QTest::qWait(waitMs);
     }
     QTest::mouseRelease(view, Qt::LeftButton, {}, p);
-    return p;
 }
 
 // Delivered synchronously: QTest::mouseMove goes through the cursor position and can
