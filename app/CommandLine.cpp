@@ -23,6 +23,27 @@ std::string integratorOption(const QCommandLineParser& parser) {
                          .arg(name, known.join(QStringLiteral(", ")))};
 }
 
+void refuseOptionsTheIntegratorIgnores(const QCommandLineParser& parser,
+                                       const std::string& integrator) {
+    const bool jacobi = integrator == "jacobi" || integrator == "jacobi-scalar";
+    const struct {
+        const char* option;
+        bool read;
+        const char* readBy;
+    } options[] = {
+        {"substeps", integrator == "xpbd", "xpbd"},
+        {"no-self-contact", integrator == "xpbd", "xpbd"},
+        {"iterations", jacobi, "jacobi and jacobi-scalar"},
+        {"gravity-outside-filter", jacobi, "jacobi and jacobi-scalar"},
+    };
+    const QStringList given = parser.optionNames();
+    for (const auto& o : options)
+        if (!o.read && given.contains(QLatin1String(o.option)))
+            throw UsageError{QStringLiteral("--%1 applies to %2 only; the integrator here is %3")
+                                 .arg(QLatin1String(o.option), QLatin1String(o.readBy),
+                                      QString::fromStdString(integrator))};
+}
+
 void addThreadsOption(QCommandLineParser& parser) {
     parser.addOption({QStringLiteral("threads"),
                       QStringLiteral("Threads the step runs on (default: all cores, %1 here). The "

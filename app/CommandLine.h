@@ -26,6 +26,12 @@ std::optional<std::uint64_t> seedOption(const QCommandLineParser& parser, const 
 // other name.
 std::string integratorOption(const QCommandLineParser& parser);
 
+// Refuses an option given on the command line that `integrator` does not read
+// (--substeps to jacobi, --iterations to xpbd, …): run silently without it, the
+// command would report a result the user did not ask for.
+void refuseOptionsTheIntegratorIgnores(const QCommandLineParser& parser,
+                                       const std::string& integrator);
+
 // --threads: the threads a step runs on. addThreadsOption adds it to a command;
 // threadsOption reads it (1-64), or gives all the machine's threads when it is not given.
 void addThreadsOption(QCommandLineParser& parser);

@@ -40,6 +40,7 @@ int runFidelity(const QStringList& arguments) {
     FidelityOptions o;
     o.quick = parser.isSet(QStringLiteral("quick"));
     o.integrator = integratorOption(parser);
+    refuseOptionsTheIntegratorIgnores(parser, o.integrator);
     if (!materialPreset(parser.value(QStringLiteral("material")).toStdString(), o.material))
         throw UsageError{QStringLiteral("--material: unknown material '%1' (tissue, office, card)")
                              .arg(parser.value(QStringLiteral("material")))};

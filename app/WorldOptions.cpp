@@ -105,6 +105,7 @@ World worldFromOptions(const QCommandLineParser& parser) {
     if (parser.isSet(QStringLiteral("integrator"))) {
         p.integrator = integratorOption(parser);
     }
+    refuseOptionsTheIntegratorIgnores(parser, p.integrator);
     return std::move(*world);
 }
 

@@ -256,6 +256,24 @@ class TestSimulateCli : public QObject {
         QTest::newRow("too many threads")
             << QStringList{"render", "--threads", "65", "--output", "x.png"} << "threads";
         QTest::newRow("unknown option") << QStringList{"simulate", "--frobnicate"} << "frobnicate";
+        // An option the integrator does not read ran as if it were not given.
+        QTest::newRow("sub-steps to jacobi")
+            << QStringList{"simulate", "--integrator", "jacobi", "--substeps", "7"}
+            << "--substeps applies to xpbd only; the integrator here is jacobi";
+        QTest::newRow("sweeps to xpbd")
+            << QStringList{"simulate", "--iterations", "3"} << "--iterations applies to jacobi";
+        QTest::newRow("gravity outside the filter to symplectic")
+            << QStringList{"export",     "--integrator",
+                           "symplectic", "--gravity-outside-filter",
+                           "--output",   QDir::temp().filePath("pf-never-written.obj")}
+            << "the integrator here is symplectic";
+        QTest::newRow("self-contact to backward-euler")
+            << QStringList{"render",   "--integrator", "backward-euler", "--no-self-contact",
+                           "--output", "x.png"}
+            << "--no-self-contact applies to xpbd only";
+        QTest::newRow("fidelity's sub-steps to jacobi")
+            << QStringList{"fidelity", "--integrator", "jacobi", "--substeps", "3"}
+            << "--substeps applies to xpbd only";
         QTest::newRow("unknown command") << QStringList{"fly"} << "fly";
         QTest::newRow("stray argument") << QStringList{"simulate", "extra"} << "extra";
     }
