@@ -11,6 +11,7 @@
 #include "StabilityCommand.h"
 
 #include <QApplication>
+#include <QByteArrayView>
 #include <QCoreApplication>
 #include <QGuiApplication>
 #include <QLocale>
@@ -98,6 +99,15 @@ int runCommand(const QStringList& args, QTextStream& err) {
     }
 }
 
+// Qt reads the command line as UTF-8 and writes file names as UTF-8: a name in another
+// encoding ("a\xff.paper") became "a\uFFFD.paper", so --save wrote a file of another
+// name and --load found none. The first such argument, counted from 1; 0 if none.
+int firstArgumentNotInUtf8(int argc, char* argv[]) {
+    for (int k = 1; k < argc; ++k)
+        if (!QByteArrayView(argv[k]).isValidUtf8()) return k;
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char* argv[]) {
@@ -105,6 +115,13 @@ int main(int argc, char* argv[]) {
     // message and its temporary file left; ignored, the write fails with EFBIG, and the
     // writer says so and removes what it began.
     std::signal(SIGXFSZ, SIG_IGN);
+    if (const int k = firstArgumentNotInUtf8(argc, argv)) {
+        QTextStream(stderr) << "paperfold: argument " << k << " ('" << QString::fromUtf8(argv[k])
+                            << "') is not UTF-8 text; paperfold reads and writes file names in "
+                               "UTF-8, so it would use another name than the one given. Rename "
+                               "the file, or give the name in UTF-8\n";
+        return 1;
+    }
     // No command (or only editor options and a file): the desktop editor.
     if (startsEditor(argc, argv)) {
         if (const std::string_view command = commandAfterEditorOptions(argc, argv);

@@ -330,6 +330,27 @@ class TestSimulateCli : public QObject {
         QVERIFY2(err.contains("the output could not be written"), err.constData());
     }
 
+    // Qt reads arguments as UTF-8: a name in another encoding ("a\xff.paper", byte 0xFF)
+    // was saved as "a\uFFFD.paper", a file of another name, and said nothing of it.
+    void aNameNotInUtf8IsRefusedNotChanged() {
+        QTemporaryDir dir;
+        QProcess p;
+        p.setWorkingDirectory(dir.path());
+        // QProcess writes its arguments as UTF-8, so a shell's printf makes the byte.
+        p.start(QStringLiteral("/bin/sh"),
+                {"-c",
+                 "exec \"$0\" simulate --scene drape --steps 1 --integrator jacobi --save "
+                 "\"$(printf 'a\\377.paper')\"",
+                 QStringLiteral(PAPERFOLD_EXE)});
+        QVERIFY(p.waitForFinished(120000 * PAPERFOLD_TEST_SLOWDOWN));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 1);
+        const QByteArray err = p.readAllStandardError();
+        QVERIFY2(err.contains("argument 9 ('a\xef\xbf\xbd.paper') is not UTF-8 text"),
+                 err.constData());
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList());
+    }
+
     // Under a file-size limit (ulimit -f) the process was killed mid-write by SIGXFSZ,
     // with no message and its temporary file left beside the one it was to replace.
     void aFileSizeLimitFailsTheSaveAndLeavesNothing() {
