@@ -128,7 +128,23 @@ bool writeAll(int fd, const QByteArray& bytes, int* err) {
 
 QString checkOutputPath(const QString& path, const QStringList& inputs) {
     Target target;
-    return resolveTarget(path, inputs, &target);
+    if (QString problem = resolveTarget(path, inputs, &target); !problem.isEmpty()) return problem;
+    // The permission bits do not say everything: root passes them in /proc and /sys, whose
+    // file systems then refuse a new file, and a save there failed only after the whole
+    // run. So a file is made in the folder, as the write will make its temporary one, and
+    // removed at once.
+    for (int attempt = 0; attempt < 16; ++attempt) {
+        const QByteArray probe = temporaryName(target.path, attempt);
+        const int fd = ::open(probe.constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+        if (fd >= 0) {
+            ::close(fd);
+            ::unlink(probe.constData());
+            return {};
+        }
+        if (errno != EEXIST)
+            return QStringLiteral("cannot write '%1': %2").arg(path, osReason(errno));
+    }
+    return {}; // every name taken: the write itself will say so
 }
 
 bool writeOutputFile(const QString& path, const QByteArray& bytes, QString* error,

@@ -256,6 +256,17 @@ class TestSimulateCli : public QObject {
         QTest::newRow("too many threads")
             << QStringList{"render", "--threads", "65", "--output", "x.png"} << "threads";
         QTest::newRow("unknown option") << QStringList{"simulate", "--frobnicate"} << "frobnicate";
+        // Root passes the permission bits in /proc, which then refuses a new file: the
+        // save failed only after the run ("cannot write", with no option named).
+        QTest::newRow("a save where no file can be made")
+            << QStringList{"simulate",
+                           "--scene",
+                           "press",
+                           "--steps",
+                           "2000",
+                           "--save",
+                           "/proc/pf-never-written.paper"}
+            << "--save: cannot write '/proc/pf-never-written.paper'";
         // An option the integrator does not read ran as if it were not given.
         QTest::newRow("sub-steps to jacobi")
             << QStringList{"simulate", "--integrator", "jacobi", "--substeps", "7"}
