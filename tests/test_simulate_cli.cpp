@@ -13,6 +13,7 @@
 #include <QMap>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QThread>
@@ -841,6 +842,23 @@ class TestSimulateCli : public QObject {
         QCOMPARE(o[QStringLiteral("recorded_state_hash")].toString(), expected);
         QCOMPARE(o[QStringLiteral("matches_recording")].toBool(), true);
         QVERIFY2(r.err.isEmpty(), r.err.constData());
+
+        // On a terminal the replay shows the step it has reached, and ends on the last one;
+        // above, in a pipe, it said nothing. `script` gives it a terminal.
+        if (!QStandardPaths::findExecutable(QStringLiteral("script")).isEmpty()) {
+            QProcess terminal;
+            terminal.start(
+                QStringLiteral("script"),
+                {"-qec", "exec \"" PAPERFOLD_EXE "\" replay \"" + rec + "\"", "/dev/null"});
+            QVERIFY(terminal.waitForFinished(120000 * PAPERFOLD_TEST_SLOWDOWN));
+            QCOMPARE(terminal.exitCode(), 0);
+            const QByteArray shown = terminal.readAllStandardOutput();
+            const QByteArray last = QStringLiteral("\rreplaying: step %1 of %1 (100 %)\r\n")
+                                        .arg(session.world().stepCount)
+                                        .toUtf8();
+            QVERIFY2(shown.startsWith("\rreplaying: step 0 of ") && shown.contains(last),
+                     shown.constData());
+        }
 
         // A recording whose session ended elsewhere (as one made by another version of
         // PaperFold that undoes differently): the replay runs as this version does, and
