@@ -183,8 +183,9 @@ std::optional<EditSession::StrokeEnd> EditSession::setTool(const Vec3& target, d
     if (grabbing() || folding()) pressed = false; // one stroke at a time
     sphere.active = visible && pressed;
     sphere.hovering = visible && !pressed;
-    if (pressed && !pressed_) beginStroke();
+    if (pressed && !pressed_) beginStroke(Thaw::AtTouch);
     const bool released = pressed_ && !pressed;
+    if (released) thawAtTouch_ = false; // it never came near: the sheet stays settled
     pressed_ = pressed;
     return released ? endStroke(StrokeKind::Push) : std::nullopt;
 }
@@ -390,7 +391,7 @@ void EditSession::noteWhatAResetSees() {
     if (newestReset() && redoWaiting()) resetSeenAt_ = std::make_shared<const World>(worldToSave());
 }
 
-void EditSession::beginStroke() {
+void EditSession::beginStroke(Thaw thaw) {
     forgetFoldWatch(); // the next edit came first
     noteWhatAResetSees();
     // While a redo waits, the damage since the undo is no stroke's yet: an edit that ends
@@ -401,7 +402,19 @@ void EditSession::beginStroke() {
         settledSince_ = kNone;
     }
     pressedFrozen_ = settle_ == Settle::Frozen;
-    setSettle(Settle::None);
+    if (thaw == Thaw::AtTouch && settle_ == Settle::Frozen) {
+        thawAtTouch_ = true;
+        const Sheet& s = sim_.world().sheet;
+        double longest2 = 0.0;
+        for (Index e = 0; e < s.springs.size(); ++e)
+            if (s.springs.kind[e] == SpringKind::Structural)
+                longest2 =
+                    std::max(longest2,
+                             (s.verts.x[s.springs.a[e]] - s.verts.x[s.springs.b[e]]).squaredNorm());
+        longestEdgeWhenPressed_ = std::sqrt(longest2);
+    } else {
+        setSettle(Settle::None);
+    }
     strokeStart_ = static_cast<Index>(sim_.world().sheet.events.size());
     pressedLook_ = look();
     pressedMesh_ = meshSize();
@@ -752,6 +765,7 @@ StepStatus EditSession::advance(int steps) {
         pullGrabbed();
         // While the sheet settles or stands settled the scene's motions wait: their
         // times move on with the clock.
+        if (thawAtTouch_ && sphere.active && toolNearThePaper()) setSettle(Settle::None);
         if (settle_ != Settle::None) shiftScript(w.script.pins, w.params.dt);
         if (settle_ == Settle::Frozen) {
             // Kept as it is: the clock runs (commands stay stamped in order), nothing moves.
@@ -798,7 +812,16 @@ void EditSession::settle() {
     settleLook_ = look();
 }
 
+bool EditSession::toolNearThePaper() const {
+    const World& w = sim_.world();
+    const double reach = w.sphere.radius + longestEdgeWhenPressed_ + 0.01;
+    for (const Vec3& x : w.sheet.verts.x)
+        if ((x - w.sphere.center).squaredNorm() < reach * reach) return true;
+    return false;
+}
+
 void EditSession::setSettle(Settle settle) {
+    thawAtTouch_ = false;
     settle_ = settle;
     sim_.allowDamage(settle == Settle::None);
     // "Keep it like this": a scene's motions wait too (crumple-cycles' rim pulled the

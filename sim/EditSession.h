@@ -355,7 +355,17 @@ class EditSession {
     int sheet_ = 0;         // which sheet is in place: 0 the first, each Reset a new one
     SheetLook pressedLook_; // the sheet when the current stroke began
     MeshSize pressedMesh_;
-    void beginStroke();
+    // A push pressed on a settled sheet leaves it settled until the tool comes near the
+    // paper (AtTouch): pressed on the bare desk it moved nothing, yet ended the freeze,
+    // and a scene's motions went on. Every other edit ends it at once.
+    enum class Thaw { Now, AtTouch };
+    void beginStroke(Thaw thaw = Thaw::Now);
+    // Whether the tool, where it is now, is near enough the paper to touch it this step:
+    // within its radius and a cell's length of a vertex (a touch inside a cell is within
+    // half a cell's length of one), and a centimetre more.
+    bool toolNearThePaper() const;
+    bool thawAtTouch_ = false;
+    double longestEdgeWhenPressed_ = 0.0;
     // One step of a settle under way: no damage; freezes the sheet once it rests.
     StepStatus settleStep();
     void freeze();

@@ -57,6 +57,19 @@ std::optional<EditSession::StrokeEnd> pushStroke(EditSession& session, double fr
     return session.setTool(spherePathAt(path, to), radius, true, false);
 }
 
+// A push straight down onto `point` from 5 cm above it, pressed 1 cm below it, a quarter
+// second down and let go.
+std::optional<EditSession::StrokeEnd> pressInto(EditSession& session, const Vec3& point) {
+    const double radius = session.world().sphere.radius;
+    const Vec3 above = point + Vec3(0.0, radius + 0.05, 0.0);
+    session.setTool(above, radius, true, false);
+    session.placeToolAtTarget();
+    session.setTool(above, radius, true, true);
+    session.setTool(point + Vec3(0.0, radius - 0.01, 0.0), radius, true, true);
+    if (session.advance(60) != StepStatus::Ok) return std::nullopt;
+    return session.setTool(point + Vec3(0.0, radius - 0.01, 0.0), radius, true, false);
+}
+
 // Two strokes along the press path, a quarter second apart, both breaking the sheet.
 std::optional<std::pair<EditSession::StrokeEnd, EditSession::StrokeEnd>>
 pushTwice(EditSession& session) {
@@ -928,9 +941,11 @@ class TestEditSession : public QObject {
         session.advance(100);
         QCOMPARE(session.world().sheet.verts.x, kept);
 
-        // The next edit ends the freeze: a press of the tool pushes again. Its undo gives
-        // back the settled sheet, settled.
-        const auto pushed = pushStroke(session, 0.0, 0.3);
+        // The next edit ends the freeze: a press of the tool into the paper pushes again.
+        // Its undo gives back the settled sheet, settled. (Along the press path again it
+        // would touch no paper, the first stroke having ploughed it away, and leave the
+        // sheet settled: aPushOnTheBareDeskLeavesASettledSheetSettled.)
+        const auto pushed = pressInto(session, kept[kept.size() / 2]);
         QVERIFY(pushed);
         QVERIFY(!session.frozen());
         QVERIFY(session.world().sheet.verts.x != kept);
@@ -1005,6 +1020,62 @@ class TestEditSession : public QObject {
         for (std::size_t k = 0; k < rim.size(); ++k)
             off = std::max(off, (gathered[k] - expected[k]).norm());
         QVERIFY2(off < 1e-6, qPrintable(QString::number(off)));
+    }
+
+    // A push pressed on the bare desk beside a settled sheet moved nothing, yet ended the
+    // freeze: the rim of crumple-cycles went on and pulled the sheet. It stays settled
+    // until the tool comes near the paper, and thaws before the tool touches it.
+    void aPushOnTheBareDeskLeavesASettledSheetSettled() {
+        World scene = test::machineryScene("crumple-cycles");
+        const std::vector<Index> rim = scene.script.pins.front().vertices;
+        EditSession session(std::move(scene));
+        const int halfGather = static_cast<int>(std::lround(kCrumpleGather * 120));
+        QCOMPARE(session.advance(halfGather), StepStatus::Ok);
+        session.settle();
+        for (int k = 0; k < 2000 && session.settling(); ++k)
+            QCOMPARE(session.advance(1), StepStatus::Ok);
+        QVERIFY(session.frozen());
+        const std::vector<Vec3> settled = session.world().sheet.verts.x;
+        double farthest = 0.0; // from the origin, over the sheet
+        for (const Vec3& x : settled) farthest = std::max(farthest, x.norm());
+        const double radius = 0.03;
+        const double onDesk = session.world().groundHeight + radius;
+
+        // Pressed 10 cm beyond the sheet, it ploughs the desk for a second and lets go.
+        const Vec3 beside(farthest + 0.1 + radius, onDesk, 0.0);
+        session.setTool(beside, radius, true, false);
+        QCOMPARE(session.advance(1), StepStatus::Ok);
+        QVERIFY(!session.setTool(beside, radius, true, true));
+        for (int k = 0; k < 240; ++k) {
+            const double t = k / 240.0;
+            session.setTool(beside + Vec3(0.05 * t, 0.0, 0.1 * std::sin(6.0 * t)), radius, true,
+                            true);
+            QCOMPARE(session.advance(1), StepStatus::Ok);
+            QVERIFY(session.frozen());
+        }
+        QVERIFY(!session.setTool(beside, radius, true, false)); // no undo step: nothing moved
+        QVERIFY(session.frozen());
+        QVERIFY(session.world().sheet.verts.x == settled); // the rim too
+
+        // Pressed and carried onto the sheet, it thaws the sheet before it reaches it.
+        QVERIFY(!session.setTool(beside, radius, true, true));
+        const Vec3 centre(0.0, onDesk, 0.0);
+        bool thawed = false;
+        for (int k = 0; k < 480 && !thawed; ++k) {
+            session.setTool(centre, radius, true, true);
+            const Vec3 at = session.world().sphere.center;
+            double nearest = std::numeric_limits<double>::infinity();
+            for (const Vec3& x : session.world().sheet.verts.x)
+                nearest = std::min(nearest, (x - at).norm() - radius);
+            QCOMPARE(session.advance(1), StepStatus::Ok);
+            thawed = !session.frozen();
+            if (!thawed) QVERIFY2(nearest > kToolReach, qPrintable(QString::number(nearest)));
+        }
+        QVERIFY(thawed);
+        // Thawed, the scene goes on: the rim moves again.
+        const Vec3 rimBefore = session.world().sheet.verts.x[rim.front()];
+        QCOMPARE(session.advance(24), StepStatus::Ok);
+        QVERIFY(session.world().sheet.verts.x[rim.front()] != rimBefore);
     }
 
     void aSessionWithASettleReplays() {
