@@ -40,7 +40,8 @@ void addWorldOptions(QCommandLineParser& parser) {
          QStringLiteral("f")},
         {QStringLiteral("integrator"),
          QStringLiteral("Integrator: %1.").arg(joined(integratorNames())), QStringLiteral("name")},
-        {QStringLiteral("iterations"), QStringLiteral("Jacobi sweeps after the first estimate."),
+        {QStringLiteral("iterations"),
+         QStringLiteral("Jacobi sweeps after the first estimate (jacobi, jacobi-scalar)."),
          QStringLiteral("k")},
         {QStringLiteral("dt"), QStringLiteral("Time step in seconds."), QStringLiteral("h")},
         {QStringLiteral("material"),
@@ -50,8 +51,8 @@ void addWorldOptions(QCommandLineParser& parser) {
         {QStringLiteral("no-self-contact"),
          QStringLiteral("Let the paper's layers pass through each other (xpbd).")},
         {QStringLiteral("gravity-outside-filter"),
-         QStringLiteral("Integrate gravity outside the implicit filter (the editor's default; "
-                        "the paper's Eq. 6 divides it by W).")},
+         QStringLiteral("Integrate gravity outside the implicit filter (jacobi, "
+                        "jacobi-scalar; the paper's Eq. 6 divides it by W).")},
     });
 }
 
