@@ -763,9 +763,9 @@ StepStatus EditSession::advance(int steps) {
         sphere.center += move;
         sphere.velocity = move / w.params.dt;
         pullGrabbed();
+        if (thawAtTouch_ && sphere.active && toolNearThePaper()) setSettle(Settle::None);
         // While the sheet settles or stands settled the scene's motions wait: their
         // times move on with the clock.
-        if (thawAtTouch_ && sphere.active && toolNearThePaper()) setSettle(Settle::None);
         if (settle_ != Settle::None) shiftScript(w.script.pins, w.params.dt);
         if (settle_ == Settle::Frozen) {
             // Kept as it is: the clock runs (commands stay stamped in order), nothing moves.
@@ -814,7 +814,9 @@ void EditSession::settle() {
 
 bool EditSession::toolNearThePaper() const {
     const World& w = sim_.world();
-    const double reach = w.sphere.radius + longestEdgeWhenPressed_ + 0.01;
+    // (It came this step's move, up to 15 cm at the largest time step.)
+    const double reach =
+        w.sphere.radius + longestEdgeWhenPressed_ + w.sphere.velocity.norm() * w.params.dt + 0.01;
     for (const Vec3& x : w.sheet.verts.x)
         if ((x - w.sphere.center).squaredNorm() < reach * reach) return true;
     return false;

@@ -361,8 +361,8 @@ class EditSession {
     enum class Thaw { Now, AtTouch };
     void beginStroke(Thaw thaw = Thaw::Now);
     // Whether the tool, where it is now, is near enough the paper to touch it this step:
-    // within its radius and a cell's length of a vertex (a touch inside a cell is within
-    // half a cell's length of one), and a centimetre more.
+    // within its radius, a cell's length (a touch inside a cell is within that of each of
+    // its corners), the step's move and a centimetre of a vertex.
     bool toolNearThePaper() const;
     bool thawAtTouch_ = false;
     double longestEdgeWhenPressed_ = 0.0;
