@@ -9,12 +9,11 @@
 #include "SheetFile.h"
 #include "SheetStats.h"
 #include "StatsJson.h"
+#include "StepProgress.h"
 
 #include <QElapsedTimer>
 #include <QJsonDocument>
 #include <QTextStream>
-#include <cstdio>
-#include <unistd.h>
 
 namespace pf::cli {
 
@@ -66,10 +65,6 @@ int runReplay(const QStringList& arguments) {
     EditSession session(log);
     session.simulation().setThreads(threads);
     QTextStream err(stderr);
-    // A session of minutes replays in minutes: on a terminal the step it has reached
-    // stands on one line, redrawn at most five times a second (not in a pipe or a file,
-    // whose reader wants the result alone).
-    const bool progress = isatty(fileno(stderr));
 
     // Frame f shows the sheet after f·every steps, and a last one the session's end when
     // --every does not divide its steps (a session of 16,805 steps rendered every 2,000
@@ -78,6 +73,7 @@ int runReplay(const QStringList& arguments) {
     const std::int64_t total = log.endStep - log.start.stepCount;
     const bool endApart = total % every != 0;
     const std::int64_t frameCount = total / every + 1 + (endApart ? 1 : 0);
+    StepProgress progress(err, QStringLiteral("replaying"), total);
     std::unique_ptr<OffscreenRenderer> renderer;
     OrbitCamera camera;
     auto writeFrame = [&](std::int64_t f) {
@@ -88,7 +84,8 @@ int runReplay(const QStringList& arguments) {
         if (writePng(renderer->render(snap, camera, options), frames->path(int(f)), &error,
                      QStringList{path} + picture.lookInputs))
             return true;
-        err << (progress ? "\n" : "") << "paperfold: " << error << '\n';
+        progress.end();
+        err << "paperfold: " << error << '\n';
         return false;
     };
     if (frames) {
@@ -112,29 +109,18 @@ int runReplay(const QStringList& arguments) {
         if (!writeFrame(0)) return 2;
     }
     bool written = true;
-    QElapsedTimer sinceShown;
-    sinceShown.start();
-    auto showProgress = [&](std::int64_t done) {
-        err << QStringLiteral("\rreplaying: step %1 of %2 (%3 %)")
-                   .arg(done)
-                   .arg(total)
-                   .arg(total > 0 ? 100 * done / total : 100)
-            << Qt::flush;
-        sinceShown.restart();
-    };
-    if (progress) showProgress(0);
     std::function<bool(const EditSession&)> afterStep;
-    if (frames || progress)
+    if (frames || progress.shown())
         afterStep = [&](const EditSession& s) {
             const std::int64_t done = s.world().stepCount - log.start.stepCount;
             if (frames && done % every == 0) written = writeFrame(done / every);
-            if (progress && (done == total || sinceShown.elapsed() >= 200)) showProgress(done);
+            progress.at(done);
             return written;
         };
     QElapsedTimer timer;
     timer.start();
     const std::string failure = replay(log, session, afterStep);
-    if (progress) err << '\n' << Qt::flush;
+    progress.end();
     if (!written) return 2;
     if (frames && endApart && failure.empty() && !writeFrame(frameCount - 1)) return 2;
     const double wall = static_cast<double>(timer.nsecsElapsed()) * 1e-9;

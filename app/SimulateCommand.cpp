@@ -4,6 +4,7 @@
 #include "SheetFile.h"
 #include "Simulation.h"
 #include "StatsJson.h"
+#include "StepProgress.h"
 #include "WorldOptions.h"
 
 #include <QElapsedTimer>
@@ -39,6 +40,8 @@ int runSimulate(const QStringList& arguments) {
 
     Simulation sim(std::move(world));
     sim.setThreads(threads);
+    QTextStream err(stderr);
+    StepProgress progress(err, QStringLiteral("simulating"), steps);
     QElapsedTimer timer;
     timer.start();
     long long done = 0;
@@ -48,10 +51,11 @@ int runSimulate(const QStringList& arguments) {
             diverged = true;
             break;
         }
+        progress.at(done + 1);
     }
     const double wall = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
+    progress.end();
 
-    QTextStream err(stderr);
     if (parser.isSet(QStringLiteral("save"))) {
         QString error;
         if (!saveWorld(sim.world(), parser.value(QStringLiteral("save")), &error, inputs)) {
