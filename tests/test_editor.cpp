@@ -557,6 +557,14 @@ class TestEditor : public QObject {
             QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
             QCOMPARE(window->undoStack()->index(), 1);
             QCOMPARE(window->statusBar()->currentMessage(), waits);
+            // Settle and Reset wait too, and say so (they did nothing, silently).
+            for (const Qt::Key key : {Qt::Key_K, Qt::Key_R}) {
+                window->statusBar()->clearMessage();
+                QTest::keyClick(window.get(), key, Qt::ControlModifier);
+                QCOMPARE(window->statusBar()->currentMessage(),
+                         QStringLiteral("Not now: the mouse holds the paper. Let go first."));
+                QCOMPARE(window->undoStack()->count(), 2);
+            }
             moveMouse(view, p + QPoint(6, 0), Qt::LeftButton);
             QVERIFY2(held(), tool);
             // The stack's own actions enable themselves when its index moves: still held.

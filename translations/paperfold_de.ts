@@ -669,8 +669,12 @@
         <translation>Die Anheftungen halten dieses Papier straff: Die Hand zieht mit höchstens %1 N, wie ein Fingergriff, bevor Papier aus ihm rutscht, und Papier dehnt sich nicht, um ihr zu folgen.</translation>
     </message>
     <message>
-        <source>This push moved nothing: the tool touched no paper, or slid over paper it cannot move (paper that pins hold all round, say). Push where the paper is free, or unpin it.</source>
-        <translation>Dieses Drücken hat nichts bewegt: Das Werkzeug hat kein Papier berührt oder ist über Papier geglitten, das es nicht bewegen kann (etwa Papier, das ringsum angeheftet ist). Drücken Sie dort, wo das Papier frei ist, oder lösen Sie die Anheftungen.</translation>
+        <source>This push moved nothing: the tool touched no paper, or slid over paper it cannot move (paper held by pins, say). Push where the paper is free, or unpin it.</source>
+        <translation>Dieses Drücken hat nichts bewegt: Das Werkzeug hat kein Papier berührt oder ist über Papier geglitten, das es nicht bewegen kann (etwa Papier, das Anheftungen festhalten). Drücken Sie dort, wo das Papier frei ist, oder lösen Sie die Anheftungen.</translation>
+    </message>
+    <message>
+        <source>Not now: the mouse holds the paper. Let go first.</source>
+        <translation>Nicht jetzt: Die Maus hält das Papier. Erst loslassen.</translation>
     </message>
 </context>
 <context>

@@ -664,8 +664,12 @@
         <translation>ピン留めがこの紙をぴんと張っています。手は最大 %1 N で引きます（それを超えると、つまんだ紙は指から滑ります）。紙は伸びてついて来ません。</translation>
     </message>
     <message>
-        <source>This push moved nothing: the tool touched no paper, or slid over paper it cannot move (paper that pins hold all round, say). Push where the paper is free, or unpin it.</source>
-        <translation>この押し操作では何も動きませんでした。ツールが紙に触れなかったか、動かせない紙（周囲をピン留めされた紙など）の上を滑りました。紙が自由な所を押すか、ピン留めを外してください。</translation>
+        <source>This push moved nothing: the tool touched no paper, or slid over paper it cannot move (paper held by pins, say). Push where the paper is free, or unpin it.</source>
+        <translation>この押し操作では何も動きませんでした。ツールが紙に触れなかったか、動かせない紙（ピンで留められた紙など）の上を滑りました。紙が自由な所を押すか、ピン留めを外してください。</translation>
+    </message>
+    <message>
+        <source>Not now: the mouse holds the paper. Let go first.</source>
+        <translation>今はできません：マウスが紙を押さえています。先に離してください。</translation>
     </message>
 </context>
 <context>

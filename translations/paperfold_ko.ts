@@ -664,8 +664,12 @@
         <translation>고정점이 이 종이를 팽팽하게 잡고 있습니다. 손은 최대 %1 N으로 당기며(그 이상이면 집은 종이가 손가락에서 미끄러집니다), 종이는 늘어나서 따라오지 않습니다.</translation>
     </message>
     <message>
-        <source>This push moved nothing: the tool touched no paper, or slid over paper it cannot move (paper that pins hold all round, say). Push where the paper is free, or unpin it.</source>
-        <translation>이번 누르기로는 아무것도 움직이지 않았습니다. 도구가 종이에 닿지 않았거나, 움직일 수 없는 종이(사방이 고정점으로 잡힌 종이 등) 위를 미끄러졌습니다. 종이가 자유로운 곳을 누르거나 고정을 푸세요.</translation>
+        <source>This push moved nothing: the tool touched no paper, or slid over paper it cannot move (paper held by pins, say). Push where the paper is free, or unpin it.</source>
+        <translation>이번 누르기로는 아무것도 움직이지 않았습니다. 도구가 종이에 닿지 않았거나, 움직일 수 없는 종이(고정점으로 잡힌 종이 등) 위를 미끄러졌습니다. 종이가 자유로운 곳을 누르거나 고정을 푸세요.</translation>
+    </message>
+    <message>
+        <source>Not now: the mouse holds the paper. Let go first.</source>
+        <translation>지금은 할 수 없습니다: 마우스가 종이를 잡고 있습니다. 먼저 놓으세요.</translation>
     </message>
 </context>
 <context>

@@ -164,7 +164,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         if (playing_)
             statusBar()->showMessage(
                 tr("This push moved nothing: the tool touched no paper, or slid over paper it "
-                   "cannot move (paper that pins hold all round, say). Push where the paper is "
+                   "cannot move (paper held by pins, say). Push where the paper is "
                    "free, or unpin it."),
                 8000);
     });
@@ -473,7 +473,10 @@ void MainWindow::createActions() {
                 sim_->stepOnce();
             });
     connect(make("settle", QKeySequence(tr("Ctrl+K"))), &QAction::triggered, this, [this] {
-        if (input_->toolPressed()) return; // not in the middle of a push
+        if (input_->toolPressed()) { // not in the middle of a push; silent, it seemed lost
+            statusBar()->showMessage(tr("Not now: the mouse holds the paper. Let go first."), 5000);
+            return;
+        }
         if (foldUnderWay_) {
             statusBar()->showMessage(tr("Not now: a fold is under way."), 5000);
             return;
@@ -486,7 +489,11 @@ void MainWindow::createActions() {
     connect(make("reset", QKeySequence(tr("Ctrl+R")), QStyle::SP_BrowserReload),
             &QAction::triggered, this, [this] {
                 // An undo step, so nothing to ask: Edit ▸ Undo gives the sheet back.
-                if (input_->toolPressed()) return; // not in the middle of a push
+                if (input_->toolPressed()) { // not in the middle of a push
+                    statusBar()->showMessage(
+                        tr("Not now: the mouse holds the paper. Let go first."), 5000);
+                    return;
+                }
                 if (foldUnderWay_) {
                     statusBar()->showMessage(tr("Not now: a fold is under way."), 5000);
                     return;
