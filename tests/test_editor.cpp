@@ -1075,6 +1075,16 @@ class TestEditor : public QObject {
         for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
         QVERIFY2(shown.contains(QStringLiteral("step 12 µs · at rest")),
                  qPrintable(shown.join(QStringLiteral(" | "))));
+        // Frozen by a Settle it says so, even if it runs slowly (it read "step 1 µs").
+        st.settled = true;
+        st.pace = 0.1;
+        readout.show(st);
+        shown.clear();
+        for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
+        QVERIFY2(shown.contains(QStringLiteral("step 12 µs · settled")),
+                 qPrintable(shown.join(QStringLiteral(" | "))));
+        st.settled = false;
+        st.pace = 1.0;
         // Asleep for less than a tick, no step's cost is a sleeping one's yet.
         st.stepSeconds = 0.0;
         readout.show(st);
@@ -2322,6 +2332,7 @@ class TestEditor : public QObject {
         window->simulation()->sync();
         QCOMPARE(worldOf(*window)->sheet.verts.x, kept->sheet.verts.x);
         QVERIFY(window->statusBar()->currentMessage().contains(QStringLiteral("Settled")));
+        QVERIFY(window->simulation()->status().settled);
         window->undoStack()->undo();
         window->simulation()->sync();
         QCOMPARE(worldOf(*window)->sheet.verts.x, chosenAt->sheet.verts.x);

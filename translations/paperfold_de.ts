@@ -964,6 +964,14 @@
         <source>at rest</source>
         <translation>in Ruhe</translation>
     </message>
+    <message>
+        <source>settled</source>
+        <translation>beruhigt</translation>
+    </message>
+    <message>
+        <source>%1 · settled</source>
+        <translation>%1 · beruhigt</translation>
+    </message>
 </context>
 <context>
     <name>pf::StrokeHistory</name>

@@ -955,6 +955,14 @@
         <source>at rest</source>
         <translation>静止</translation>
     </message>
+    <message>
+        <source>settled</source>
+        <translation>固定</translation>
+    </message>
+    <message>
+        <source>%1 · settled</source>
+        <translation>%1 · 固定</translation>
+    </message>
 </context>
 <context>
     <name>pf::StrokeHistory</name>

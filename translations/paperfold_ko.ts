@@ -955,6 +955,14 @@
         <source>at rest</source>
         <translation>정지</translation>
     </message>
+    <message>
+        <source>settled</source>
+        <translation>안정됨</translation>
+    </message>
+    <message>
+        <source>%1 · settled</source>
+        <translation>%1 · 안정됨</translation>
+    </message>
 </context>
 <context>
     <name>pf::StrokeHistory</name>

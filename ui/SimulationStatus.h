@@ -21,6 +21,7 @@ struct SimulationStatus {
     bool playing = false;
     bool folding = false;      // a fold is under way: undo, redo and the other tools wait
     bool settling = false;     // a Settle is under way (not frozen yet): undo and redo wait
+    bool settled = false;      // a Settle froze the sheet: it stays as it is until an edit
     bool asleep = false;       // the integrator sleeps: nothing moves, a step costs almost nothing
     double grabHeldBack = 0.0; // EditSession::grabHeldBack (m)
     std::uint64_t sheetHash = 0; // editedStateHash: tells whether it differs from a file

@@ -253,6 +253,7 @@ void SimulationWorker::setClock(SimulationStatus& st) const {
     st.pace = pacer_.pace();
     st.folding = session_.folding();
     st.settling = session_.settling();
+    st.settled = session_.frozen();
     st.asleep = asleep;
 }
 

@@ -63,13 +63,15 @@ void StatusReadout::show(const SimulationStatus& st) {
     // Paused, the toolbar's icon was the only sign, and a paused sheet could read "at rest".
     if (!st.playing)
         step = tr("%1 · paused").arg(step);
+    else if (st.settled) // it read "0 fps step 1 µs", and a user could not tell it frozen
+        step = step.isEmpty() ? tr("settled") : tr("%1 · settled").arg(step);
     else if (st.resting())
         step = step.isEmpty() ? tr("at rest") : tr("%1 · at rest").arg(step);
     // Behind real time, the paper falls and slides slower than paper does: say so, and
     // what helps.
     // (A sheet at rest keeps up whatever the last second's pace was: a user read
     // "at rest · 0.74× real time" for the second after a slow stroke.)
-    const bool behind = st.playing && !st.resting() && st.pace < kBehindRealTime;
+    const bool behind = st.playing && !st.resting() && !st.settled && st.pace < kBehindRealTime;
     if (behind) step = tr("%1 · %2× real time").arg(step, QLocale().toString(st.pace, 'f', 2));
     step_->setText(step);
     step_->setToolTip(behind ? tr("The computer cannot take the steps as fast as they happen: "
