@@ -1,5 +1,7 @@
 #include "PaperLook.h"
 
+#include "InputFile.h"
+
 #include <QBuffer>
 #include <QColor>
 #include <QFileInfo>
@@ -93,7 +95,16 @@ bool loadPaperImage(const QString& path, QImage* image, QString* error) {
         if (error) *error = QStringLiteral("no picture was named for the paper texture");
         return false;
     }
-    QImageReader reader(path);
+    // A photograph is a few MB; past this the file is not meant for paper.
+    constexpr qint64 kMaxTextureFileBytes = qint64(256) << 20;
+    // Read as a whole regular file first: a FIFO named as the texture (or a device) kept
+    // Qt's reader waiting for a writer forever, and a folder read "File not found".
+    const std::optional<QByteArray> bytes = readInputFile(path, kMaxTextureFileBytes, error);
+    if (!bytes) return false;
+    QBuffer buffer;
+    buffer.setData(*bytes);
+    buffer.open(QIODevice::ReadOnly);
+    QImageReader reader(&buffer);
     reader.setAutoTransform(true);
     const QSize size = reader.size();
     // Past this a header is lying or the picture is not meant for paper; refusing

@@ -497,6 +497,18 @@ class TestHostileInput : public QObject {
             QCOMPARE(r.exitCode, 1); // not a hang (-1), not a crash (-2)
             QVERIFY2(r.err.contains(QStringLiteral("not a regular file")), qPrintable(r.err));
         }
+        // A texture too: a FIFO kept Qt's image reader waiting for a writer forever, and a
+        // folder read "File not found".
+        for (const QString& path : {fifo, dir.path()}) {
+            const Result r =
+                runPaperfold({"render", "--resolution", "5", "--size", "16x16", "--texture", path,
+                              "--output", dir.filePath(QStringLiteral("t.png"))},
+                             30000);
+            QCOMPARE(r.exitCode, 1);
+            QVERIFY2(r.err.contains(QStringLiteral("--texture")) &&
+                         r.err.contains(QStringLiteral("not a regular file")),
+                     qPrintable(r.err));
+        }
         // Refused before reading: no more memory than a run that loads nothing (reading
         // /dev/zero until the size limit took 590 MB).
         const qint64 zero = peakMemoryOf({"simulate", "--load", "/dev/zero", "--steps", "1"});
