@@ -8,7 +8,10 @@
 #include <QStringList>
 #include <QTextStream>
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 
 namespace pf::cli {
 
@@ -42,6 +45,14 @@ void refuseOptionsTheIntegratorIgnores(const QCommandLineParser& parser,
             throw UsageError{QStringLiteral("--%1 applies to %2 only; the integrator here is %3")
                                  .arg(QLatin1String(o.option), QLatin1String(o.readBy),
                                       QString::fromStdString(integrator))};
+}
+
+int checkOutputWritten(int code) {
+    if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return code;
+    const int why = errno;
+    QTextStream(stderr) << "paperfold: the output could not be written (" << std::strerror(why)
+                        << ")\n";
+    return code != 0 ? code : 2;
 }
 
 void addThreadsOption(QCommandLineParser& parser) {

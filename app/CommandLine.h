@@ -32,6 +32,11 @@ std::string integratorOption(const QCommandLineParser& parser);
 void refuseOptionsTheIntegratorIgnores(const QCommandLineParser& parser,
                                        const std::string& integrator);
 
+// What a command printed on standard output (statistics, a table, the help) is its
+// result: lost to a full disk or a closed output, the command has failed. Flushes it;
+// if that failed, says so on standard error and returns `code`, or 2 if `code` is 0.
+int checkOutputWritten(int code);
+
 // --threads: the threads a step runs on. addThreadsOption adds it to a command;
 // threadsOption reads it (1-64), or gives all the machine's threads when it is not given.
 void addThreadsOption(QCommandLineParser& parser);

@@ -1,5 +1,6 @@
 #include "EditorMain.h"
 
+#include "CommandLine.h"
 #include "DisplayCheck.h"
 #include "Language.h"
 #include "MainWindow.h"
@@ -11,6 +12,7 @@
 #include <QSettings>
 #include <QSurfaceFormat>
 #include <QTextStream>
+#include <cstdlib>
 #include <string_view>
 
 namespace pf {
@@ -53,7 +55,11 @@ int runEditor(int argc, char* argv[]) {
         nameApplication();
         QCommandLineParser parser;
         addEditorOptions(parser);
-        parser.process(app); // prints, and exits
+        // process() prints and exits: the text lost to a full disk said nothing, exit 0.
+        std::atexit([] {
+            if (const int code = cli::checkOutputWritten(0); code != 0) std::_Exit(code);
+        });
+        parser.process(app);
         return 0;
     }
     if (const QString problem = displayProblem(); !problem.isEmpty()) {

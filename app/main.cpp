@@ -19,7 +19,6 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
-#include <cstring>
 #include <memory>
 #include <string_view>
 #include <sys/stat.h>
@@ -162,14 +161,8 @@ int main(int argc, char* argv[]) {
     if (args[1] == QLatin1String("--help") || args[1] == QLatin1String("-h") ||
         args[1] == QLatin1String("help")) {
         printUsage(out);
-        return 0;
+        out.flush();
+        return pf::cli::checkOutputWritten(0);
     }
-    const int code = runCommand(args, err);
-    // What a command printed (the statistics of --stats, a table) is its result: lost to a
-    // full disk or a closed output, the command has failed (it said nothing, exit 0).
-    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        err << "paperfold: the output could not be written (" << std::strerror(errno) << ")\n";
-        return code != 0 ? code : 2;
-    }
-    return code;
+    return pf::cli::checkOutputWritten(runCommand(args, err));
 }

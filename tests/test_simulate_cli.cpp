@@ -328,13 +328,21 @@ class TestSimulateCli : public QObject {
     }
 
     // --stats' statistics are the run's result: printed to a full disk they were lost and
-    // the command said nothing, exit 0.
+    // the command said nothing, exit 0. So were the help and the version.
+    void statisticsThatCannotBeWrittenFailTheCommand_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("statistics") << QStringList{"simulate", "--scene",      "press",  "--steps",
+                                                   "1",        "--integrator", "jacobi", "--stats"};
+        QTest::newRow("the commands' help") << QStringList{"--help"};
+        QTest::newRow("the editor's version") << QStringList{"--version"};
+        QTest::newRow("the editor's whole help") << QStringList{"--help-all"};
+    }
     void statisticsThatCannotBeWrittenFailTheCommand() {
+        QFETCH(QStringList, args);
         if (!QFile::exists(QStringLiteral("/dev/full"))) QSKIP("no /dev/full here");
         QProcess p;
         p.setStandardOutputFile(QStringLiteral("/dev/full"));
-        p.start(QStringLiteral(PAPERFOLD_EXE), {"simulate", "--scene", "press", "--steps", "1",
-                                                "--integrator", "jacobi", "--stats"});
+        p.start(QStringLiteral(PAPERFOLD_EXE), args);
         QVERIFY(p.waitForFinished(120000 * PAPERFOLD_TEST_SLOWDOWN));
         QCOMPARE(p.exitStatus(), QProcess::NormalExit);
         QCOMPARE(p.exitCode(), 2);
