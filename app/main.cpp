@@ -20,6 +20,7 @@
 #include <csignal>
 #include <cstdio>
 #include <memory>
+#include <new>
 #include <string_view>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -95,6 +96,13 @@ int runCommand(const QStringList& args, QTextStream& err) {
     } catch (const pf::cli::UsageError& e) {
         err << "paperfold: " << e.message << '\n';
         return 1;
+    } catch (const std::bad_alloc&) {
+        // Under a memory limit (ulimit -v) a large export ended in "terminate called after
+        // throwing 'std::bad_alloc'" and SIGABRT. What was being written was written whole
+        // or not at all (OutputFile), so saying so is all there is to do.
+        err << "paperfold: out of memory: the run needs more than this machine (or its "
+               "limit) allows; try a lower --resolution, --subdiv or --size\n";
+        return 2;
     }
 }
 

@@ -393,6 +393,29 @@ class TestSimulateCli : public QObject {
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList());
     }
 
+    // Under a memory limit (ulimit -v) a large export ended in "terminate called after
+    // throwing an instance of 'std::bad_alloc'" and SIGABRT, with no message of ours.
+    void runningOutOfMemorySaysSo() {
+        if (PAPERFOLD_TEST_SLOWDOWN > 1)
+            QSKIP("the sanitizers reserve more address space than the limit leaves");
+        QTemporaryDir dir;
+        QProcess p;
+        p.setChildProcessModifier([] {
+            const rlimit limit{1500LL << 20, 1500LL << 20};
+            setrlimit(RLIMIT_AS, &limit);
+        });
+        p.start(QStringLiteral(PAPERFOLD_EXE),
+                {"export", "--resolution", "200", "--subdiv", "4", "--output",
+                 dir.filePath(QStringLiteral("huge.ply"))});
+        QVERIFY(p.waitForFinished(120000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit); // not killed by SIGABRT
+        QCOMPARE(p.exitCode(), 2);
+        const QByteArray err = p.readAllStandardError();
+        QVERIFY2(err.startsWith("paperfold: out of memory") && err.count('\n') == 1,
+                 err.constData());
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList());
+    }
+
     // Under a file-size limit (ulimit -f) the process was killed mid-write by SIGXFSZ,
     // with no message and its temporary file left beside the one it was to replace.
     void aFileSizeLimitFailsTheSaveAndLeavesNothing() {
