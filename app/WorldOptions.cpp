@@ -45,7 +45,10 @@ void addWorldOptions(QCommandLineParser& parser) {
          QStringLiteral("k")},
         {QStringLiteral("dt"), QStringLiteral("Time step in seconds."), QStringLiteral("h")},
         {QStringLiteral("material"),
-         QStringLiteral("Paper (xpbd): %1.").arg(joined(materialNames())), QStringLiteral("name")},
+         QStringLiteral("Paper: %1 (its weight; for xpbd also its stiffness, bending and "
+                        "friction).")
+             .arg(joined(materialNames())),
+         QStringLiteral("name")},
         {QStringLiteral("substeps"), QStringLiteral("Sub-steps per step (xpbd, 1-1000)."),
          QStringLiteral("n")},
         {QStringLiteral("no-self-contact"),
