@@ -41,7 +41,8 @@ int runRender(const QStringList& arguments) {
         {QStringLiteral("every"), QStringLiteral("Steps between frames of a sequence (default 4)."),
          QStringLiteral("k")},
         {QStringLiteral("reference"),
-         QStringLiteral("Compare with this PNG; exit 4 and write <output>.diff.png on a mismatch."),
+         QStringLiteral("Compare with this PNG; exit 4 and write the output's name with .diff.png "
+                        "in place of .png (a.png: a.diff.png) on a mismatch."),
          QStringLiteral("png")},
         {QStringLiteral("threshold"),
          QStringLiteral("Largest fraction of differing pixels that still matches (default 0.01)."),
