@@ -9,6 +9,7 @@
 #include "ReplayCommand.h"
 #include "SimulateCommand.h"
 #include "StabilityCommand.h"
+#include "UnfinishedOutputs.h"
 
 #include <QApplication>
 #include <QByteArrayView>
@@ -122,6 +123,7 @@ int main(int argc, char* argv[]) {
     // message and its temporary file left; ignored, the write fails with EFBIG, and the
     // writer says so and removes what it began.
     std::signal(SIGXFSZ, SIG_IGN);
+    pf::removeUnfinishedOutputsOnSignals();
     if (const int k = firstArgumentNotInUtf8(argc, argv)) {
         QTextStream(stderr) << "paperfold: argument " << k << " ('" << QString::fromUtf8(argv[k])
                             << "') is not UTF-8 text; paperfold reads and writes file names in "

@@ -1,5 +1,7 @@
 #include "OutputFile.h"
 
+#include "UnfinishedOutputs.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <atomic>
@@ -168,6 +170,7 @@ bool writeOutputFile(const QString& path, const QByteArray& bytes, QString* erro
     }
     if (fd < 0)
         return failWith(QStringLiteral("cannot write '%1': no free temporary name").arg(path));
+    const UnfinishedOutput unfinished(temp); // a Ctrl+C from here on removes it
 
     int err = 0;
     bool ok = writeAll(fd, bytes, &err);

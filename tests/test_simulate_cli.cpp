@@ -6,6 +6,7 @@
 #include "SheetStats.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QImage>
 #include <QJsonDocument>
@@ -17,6 +18,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QThread>
+#include <csignal>
 #include <sys/resource.h>
 
 namespace {
@@ -391,6 +393,40 @@ class TestSimulateCli : public QObject {
         QVERIFY2(err.contains("argument 9 ('a\xef\xbf\xbd.paper') is not UTF-8 text"),
                  err.constData());
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList());
+    }
+
+    // Ctrl+C or a kill while the output was written left its hidden temporary file beside
+    // the target (".big.obj.5633.1.75306.0.tmp", 121 MB). Killed at that moment, it
+    // leaves nothing; the target it would have replaced stays as it was.
+    void aKillDuringTheWriteLeavesNoTemporaryFile() {
+        QTemporaryDir dir;
+        const QString target = dir.filePath(QStringLiteral("big.obj"));
+        QFile kept(target);
+        QVERIFY(kept.open(QIODevice::WriteOnly) && kept.write("kept\n") == 5);
+        kept.close();
+        QProcess p;
+        p.start(QStringLiteral(PAPERFOLD_EXE),
+                {"export", "--resolution", "100", "--subdiv", "3", "--output", target});
+        QVERIFY(p.waitForStarted());
+        const QDir folder(dir.path());
+        const auto temporary = [&] {
+            return folder.entryList({QStringLiteral(".*.tmp")}, QDir::Files | QDir::Hidden);
+        };
+        QElapsedTimer waited;
+        waited.start();
+        QStringList seen;
+        while ((seen = temporary()).isEmpty() && p.state() == QProcess::Running &&
+               waited.elapsed() < 120000 * PAPERFOLD_TEST_SLOWDOWN)
+            QThread::msleep(1);
+        QVERIFY2(!seen.isEmpty(),
+                 qPrintable(QStringLiteral("the write ended before the test saw it begin: ") +
+                            QString::fromUtf8(p.readAllStandardError())));
+        ::kill(pid_t(p.processId()), SIGTERM);
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitStatus(), QProcess::CrashExit); // ended by the signal, as it asked
+        QCOMPARE(temporary(), QStringList());
+        QVERIFY(kept.open(QIODevice::ReadOnly));
+        QCOMPARE(kept.readAll(), QByteArray("kept\n"));
     }
 
     // Under a memory limit (ulimit -v) a large export ended in "terminate called after
