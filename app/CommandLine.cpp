@@ -4,6 +4,8 @@
 #include "OutputFile.h"
 #include "WorkerPool.h"
 
+#include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QStringList>
 #include <QTextStream>
@@ -12,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <sys/stat.h>
 
 namespace pf::cli {
 
@@ -45,6 +48,16 @@ void refuseOptionsTheIntegratorIgnores(const QCommandLineParser& parser,
             throw UsageError{QStringLiteral("--%1 applies to %2 only; the integrator here is %3")
                                  .arg(QLatin1String(o.option), QLatin1String(o.readBy),
                                       QString::fromStdString(integrator))};
+}
+
+bool sameOutput(const QString& a, const QString& b) {
+    const QFileInfo x(a), y(b);
+    if (QDir::cleanPath(x.absoluteFilePath()) == QDir::cleanPath(y.absoluteFilePath())) return true;
+    struct stat sx {
+    }, sy{};
+    return stat(QFile::encodeName(a).constData(), &sx) == 0 &&
+           stat(QFile::encodeName(b).constData(), &sy) == 0 && sx.st_dev == sy.st_dev &&
+           sx.st_ino == sy.st_ino;
 }
 
 int checkOutputWritten(int code) {

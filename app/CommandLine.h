@@ -32,6 +32,11 @@ std::string integratorOption(const QCommandLineParser& parser);
 void refuseOptionsTheIntegratorIgnores(const QCommandLineParser& parser,
                                        const std::string& integrator);
 
+// Whether two outputs of one command name the same file (the same path once made
+// absolute and clean, or the same file on disk): the second written would replace the
+// first.
+bool sameOutput(const QString& a, const QString& b);
+
 // What a command printed on standard output (statistics, a table, the help) is its
 // result: lost to a full disk or a closed output, the command has failed. Flushes it;
 // if that failed, says so on standard error and returns `code`, or 2 if `code` is 0.

@@ -93,9 +93,17 @@ int runReplay(const QStringList& arguments) {
             throw UsageError{QStringLiteral("--render: %1 frames; use a larger --every (at most "
                                             "100000 frames)")
                                  .arg(frameCount)};
-        for (std::int64_t f = 0; f < frameCount; ++f)
+        const QString save = parser.value(QStringLiteral("save"));
+        for (std::int64_t f = 0; f < frameCount; ++f) {
             requireWritable(QStringLiteral("render"), frames->path(int(f)),
                             QStringList{path} + picture.lookInputs);
+            // The sheet was saved over frame 0 (or a frame over the sheet), and rc 0.
+            if (!save.isEmpty() && sameOutput(save, frames->path(int(f))))
+                throw UsageError{QStringLiteral("--save: '%1' is also frame %2 of --render; "
+                                                "choose another name for one of them")
+                                     .arg(save)
+                                     .arg(f)};
+        }
         requirePngName(QStringLiteral("render"), frames->path(0));
         QString error;
         renderer = OffscreenRenderer::create(picture.width, picture.height, &error);

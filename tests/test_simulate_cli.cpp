@@ -1010,6 +1010,15 @@ class TestSimulateCli : public QObject {
                  QImage(dir.filePath(QStringLiteral("w_001.png"))));
         QCOMPARE(runPaperfold({"replay", rec, "--render", dir.filePath("no_field.png")}).exitCode,
                  1);
+        // The sheet saved under a frame's name replaced frame 0, and rc 0.
+        const Result clash =
+            runPaperfold({"replay", rec, "--render", dir.filePath("clash_%d.png"), "--every", "100",
+                          "--save", dir.filePath("clash_0.png")});
+        QCOMPARE(clash.exitCode, 1);
+        QVERIFY2(clash.err.contains("--save: '" + dir.filePath("clash_0.png").toUtf8() +
+                                    "' is also frame 0 of --render"),
+                 clash.err.constData());
+        QVERIFY(QDir(dir.path()).entryList({QStringLiteral("clash*")}).isEmpty());
         // PNG data under another name would not open as what the name says.
         const Result text = runPaperfold({"replay", rec, "--render", dir.filePath("t_%03d.txt")});
         QCOMPARE(text.exitCode, 1);
