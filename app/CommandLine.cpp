@@ -50,6 +50,15 @@ void refuseOptionsTheIntegratorIgnores(const QCommandLineParser& parser,
                                       QString::fromStdString(integrator))};
 }
 
+void refuseWithout(const QCommandLineParser& parser, std::initializer_list<const char*> options,
+                   const char* needed) {
+    if (parser.isSet(QLatin1String(needed))) return;
+    for (const char* option : options)
+        if (parser.isSet(QLatin1String(option)))
+            throw UsageError{QStringLiteral("--%1 applies only with --%2, which is not given")
+                                 .arg(QLatin1String(option), QLatin1String(needed))};
+}
+
 bool sameOutput(const QString& a, const QString& b) {
     const QFileInfo x(a), y(b);
     if (QDir::cleanPath(x.absoluteFilePath()) == QDir::cleanPath(y.absoluteFilePath())) return true;

@@ -5,6 +5,7 @@
 #include <QString>
 #include <QStringList>
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <string>
 
@@ -31,6 +32,11 @@ std::string integratorOption(const QCommandLineParser& parser);
 // command would report a result the user did not ask for.
 void refuseOptionsTheIntegratorIgnores(const QCommandLineParser& parser,
                                        const std::string& integrator);
+
+// Refuses any of `options` given without `needed` (--every without --frames, say): it
+// did nothing, and the command said nothing of it.
+void refuseWithout(const QCommandLineParser& parser, std::initializer_list<const char*> options,
+                   const char* needed);
 
 // Whether two outputs of one command name the same file (the same path once made
 // absolute and clean, or the same file on disk): the second written would replace the

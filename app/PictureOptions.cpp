@@ -30,6 +30,11 @@ void addPictureOptions(QCommandLineParser& parser) {
 }
 
 PictureSetup pictureFromOptions(const QCommandLineParser& parser) {
+    // --camera sets all that --view names (yaw, pitch, distance): --view was dropped.
+    if (parser.isSet(QStringLiteral("view")) && parser.isSet(QStringLiteral("camera")))
+        throw UsageError{QStringLiteral("--view and --camera exclude each other (--camera sets "
+                                        "the whole view)")};
+    refuseWithout(parser, {"no-legend"}, "overlay");
     PictureSetup p;
     if (parser.isSet(QStringLiteral("size"))) {
         const QStringList wh = parser.value(QStringLiteral("size")).split(QLatin1Char('x'));

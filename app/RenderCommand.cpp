@@ -53,6 +53,8 @@ int runRender(const QStringList& arguments) {
         throw UsageError{QStringLiteral("--output is required")};
     const QString output = parser.value(QStringLiteral("output"));
 
+    refuseWithout(parser, {"every"}, "frames");
+    refuseWithout(parser, {"threshold"}, "reference");
     const PictureSetup picture = pictureFromOptions(parser);
     const int width = picture.width, height = picture.height;
     RenderOptions options = picture.options;

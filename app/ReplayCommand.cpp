@@ -46,6 +46,11 @@ int runReplay(const QStringList& arguments) {
     const QString path = parser.positionalArguments()[1];
     if (parser.isSet(QStringLiteral("save")))
         requireWritable(QStringLiteral("save"), parser.value(QStringLiteral("save")), {path});
+    // Without frames nothing is drawn: a --camera of "garbage" was taken without a word.
+    refuseWithout(parser,
+                  {"every", "subdiv", "size", "view", "camera", "overlay", "no-legend",
+                   "paper-color", "texture"},
+                  "render");
     const PictureSetup picture = pictureFromOptions(parser);
     const int threads = threadsOption(parser);
     const int every =

@@ -690,6 +690,19 @@ class TestSimulateCli : public QObject {
                                   << "size";
         QTest::newRow("size garbage")
             << QStringList{"render", "--size", "big", "--output", "a.png"} << "size";
+        // Options that did nothing without another, taken without a word (exit 0).
+        QTest::newRow("steps between frames of no sequence")
+            << QStringList{"render", "--every", "3", "--output", "a.png"}
+            << "--every applies only with --frames";
+        QTest::newRow("a threshold with nothing to compare")
+            << QStringList{"render", "--threshold", "0.5", "--output", "a.png"}
+            << "--threshold applies only with --reference";
+        QTest::newRow("no legend of no overlay")
+            << QStringList{"render", "--no-legend", "--output", "a.png"}
+            << "--no-legend applies only with --overlay";
+        QTest::newRow("a view and a camera")
+            << QStringList{"render", "--view", "top", "--camera", "0,10,1", "--output", "a.png"}
+            << "--view and --camera exclude each other";
         QTest::newRow("bad view") << QStringList{"render", "--view", "side", "--output", "a.png"}
                                   << "side";
         QTest::newRow("an option twice")
@@ -1010,6 +1023,11 @@ class TestSimulateCli : public QObject {
                  QImage(dir.filePath(QStringLiteral("w_001.png"))));
         QCOMPARE(runPaperfold({"replay", rec, "--render", dir.filePath("no_field.png")}).exitCode,
                  1);
+        // Without --render nothing is drawn: a camera of "garbage" was taken, exit 0.
+        const Result undrawn = runPaperfold({"replay", rec, "--camera", "garbage"});
+        QCOMPARE(undrawn.exitCode, 1);
+        QVERIFY2(undrawn.err.contains("--camera applies only with --render"),
+                 undrawn.err.constData());
         // The sheet saved under a frame's name replaced frame 0, and rc 0.
         const Result clash =
             runPaperfold({"replay", rec, "--render", dir.filePath("clash_%d.png"), "--every", "100",
