@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string_view>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -109,11 +110,20 @@ int runCommand(const QStringList& args, QTextStream& err) {
 
 // Qt reads the command line as UTF-8 and writes file names as UTF-8: a name in another
 // encoding ("a\xff.paper") became "a\uFFFD.paper", so --save wrote a file of another
-// name and --load found none. The first such argument, counted from 1; 0 if none.
-int firstArgumentNotInUtf8(int argc, char* argv[]) {
-    for (int k = 1; k < argc; ++k)
-        if (!QByteArrayView(argv[k]).isValidUtf8()) return k;
-    return 0;
+// name and --load found none. A name with a control character in it (a newline, an
+// escape) was printed as it is: a result line split in two, a terminal's title set.
+// Why argument k may not be used, or nothing.
+std::optional<QString> whyArgumentRefused(const char* argument) {
+    const QByteArrayView bytes(argument);
+    if (!bytes.isValidUtf8())
+        return QStringLiteral("is not UTF-8 text; paperfold reads and writes file names in UTF-8, "
+                              "so it would use another name than the one given");
+    for (const QChar c : QString::fromUtf8(bytes))
+        if (c.category() == QChar::Other_Control)
+            return QStringLiteral("holds a control character (U+%1), which paperfold would print "
+                                  "as it is")
+                .arg(c.unicode(), 4, 16, QLatin1Char('0'));
+    return std::nullopt;
 }
 
 } // namespace
@@ -124,13 +134,19 @@ int main(int argc, char* argv[]) {
     // writer says so and removes what it began.
     std::signal(SIGXFSZ, SIG_IGN);
     pf::removeUnfinishedOutputsOnSignals();
-    if (const int k = firstArgumentNotInUtf8(argc, argv)) {
-        QTextStream(stderr) << "paperfold: argument " << k << " ('" << QString::fromUtf8(argv[k])
-                            << "') is not UTF-8 text; paperfold reads and writes file names in "
-                               "UTF-8, so it would use another name than the one given. Rename "
-                               "the file, or give the name in UTF-8\n";
-        return 1;
-    }
+    for (int k = 1; k < argc; ++k)
+        if (const auto why = whyArgumentRefused(argv[k])) {
+            // Shown with its control characters and bad bytes made visible.
+            QString shown;
+            for (const QChar c : QString::fromUtf8(argv[k]))
+                shown += c.category() == QChar::Other_Control
+                             ? QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'))
+                             : QString(c);
+            QTextStream(stderr) << "paperfold: argument " << k << " ('" << shown << "') " << *why
+                                << ". Rename the file, or give the name in UTF-8 without "
+                                   "control characters\n";
+            return 1;
+        }
     // No command (or only editor options and a file): the desktop editor.
     if (startsEditor(argc, argv)) {
         if (const std::string_view command = commandAfterEditorOptions(argc, argv);

@@ -270,6 +270,14 @@ class TestSimulateCli : public QObject {
                            "--save",
                            "/proc/pf-never-written.paper"}
             << "--save: cannot write '/proc/pf-never-written.paper'";
+        // A name with a newline split the result line in two; one with an escape set the
+        // terminal's title.
+        QTest::newRow("a newline in a name")
+            << QStringList{"export", "--output", "new\nline.obj"}
+            << "argument 3 ('new\\x0aline.obj') holds a control character (U+000a)";
+        QTest::newRow("an escape in a name")
+            << QStringList{"simulate", "--load", "esc\x1b]0;title\ax.paper"}
+            << "('esc\\x1b]0;title\\x07x.paper') holds a control character (U+001b)";
         // An option the integrator does not read ran as if it were not given.
         QTest::newRow("sub-steps to jacobi")
             << QStringList{"simulate", "--integrator", "jacobi", "--substeps", "7"}
