@@ -126,6 +126,21 @@ std::optional<QString> whyArgumentRefused(const char* argument) {
     return std::nullopt;
 }
 
+// Qt's image readers say why a file is not a picture on the console ("qt.gui.imageio:
+// ... allocation limit") before the command's own line says it again for the file it
+// names: a headless command's errors are one line each.
+QtMessageHandler qtsOwn = nullptr;
+void leaveOutImageReaderMessages(QtMsgType type, const QMessageLogContext& context,
+                                 const QString& message) {
+    const bool imageReader =
+        context.category && std::string_view(context.category).starts_with("qt.gui.imageio");
+    if (imageReader && type != QtFatalMsg && type != QtCriticalMsg) return;
+    if (qtsOwn)
+        qtsOwn(type, context, message);
+    else
+        std::fprintf(stderr, "%s\n", qPrintable(qFormatLogMessage(type, context, message)));
+}
+
 } // namespace
 
 int main(int argc, char* argv[]) {
@@ -177,6 +192,7 @@ int main(int argc, char* argv[]) {
                                                 ? std::make_unique<QApplication>(argc, argv)
                                             : gui ? std::make_unique<QGuiApplication>(argc, argv)
                                                   : std::make_unique<QCoreApplication>(argc, argv);
+    qtsOwn = qInstallMessageHandler(leaveOutImageReaderMessages);
     QCoreApplication::setApplicationName(QStringLiteral("paperfold"));
     QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_STRING));
     // The commands speak English: the numbers they draw (an image's legend) are written

@@ -12,6 +12,10 @@ QImage decodeReferenceImage(const QByteArray& bytes, QString* error) {
         if (error) *error = why;
         return QImage();
     };
+    // Qt hands a PNG to libpng, whose own handler prints "libpng error: Not a PNG file" on
+    // the console before our line says it again: its signature is checked here first.
+    if (!bytes.startsWith(QByteArrayView("\x89PNG\r\n\x1a\n", 8)))
+        return fail(QStringLiteral("not a PNG image"));
     QBuffer buffer;
     buffer.setData(bytes);
     buffer.open(QIODevice::ReadOnly);

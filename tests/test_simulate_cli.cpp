@@ -708,6 +708,17 @@ class TestSimulateCli : public QObject {
         QTest::newRow("no legend of no overlay")
             << QStringList{"render", "--no-legend", "--output", "a.png"}
             << "--no-legend applies only with --overlay";
+        QTest::newRow("a reference that is not a PNG")
+            << QStringList{"render",
+                           "--resolution",
+                           "5",
+                           "--size",
+                           "32x32",
+                           "--reference",
+                           QStringLiteral(PAPERFOLD_EXE),
+                           "--output",
+                           QDir::temp().filePath("pf-never-written.png")}
+            << ": not a PNG image";
         QTest::newRow("a view and a camera")
             << QStringList{"render", "--view", "top", "--camera", "0,10,1", "--output", "a.png"}
             << "--view and --camera exclude each other";
@@ -761,6 +772,9 @@ class TestSimulateCli : public QObject {
         QVERIFY(r.exitCode > 0);
         const QString err = QString::fromUtf8(r.err).trimmed();
         QVERIFY2(err.contains(mentions), qPrintable(err));
+        // One line of ours (libpng printed "libpng error: Not a PNG file" before it).
+        QVERIFY2(!err.contains(QLatin1Char('\n')) && err.startsWith(QLatin1String("paperfold: ")),
+                 qPrintable(err));
         QVERIFY(!QFileInfo::exists(QStringLiteral("/tmp/pf-not-png-test.txt")));
     }
 
