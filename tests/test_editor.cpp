@@ -30,6 +30,7 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFileDialog>
 #include <QGroupBox>
 #include <QInputDialog>
 #include <QLabel>
@@ -601,6 +602,51 @@ class TestEditor : public QObject {
         QVERIFY(free());
         // Pin makes its step at the click, so nothing waits for it.
         QCOMPARE(window->undoStack()->index(), 1);
+    }
+
+    // Every file dialog opened in the folder the editor was started from: a user who had
+    // just saved into files/ found Open, Save As and Export Image back in the start folder.
+    // Now each opens where the last file was chosen (kept between sessions).
+    void fileDialogsOpenWhereTheLastFileWasChosen() {
+        QSettings().remove(QStringLiteral("dialogs/lastFolder"));
+        QCOMPARE(EditorDialogs::startingPlace(FileDialog::Open, {}), QDir::homePath());
+        QTemporaryDir dir;
+        QString openedIn;
+        // Answers the next file dialog with `pick` (cancels it if empty), noting its folder.
+        const auto answerNextDialog = [&](const QString& pick) {
+            auto* poll = new QTimer(window.get());
+            connect(poll, &QTimer::timeout, poll, [poll, pick, &openedIn] {
+                auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+                if (!dialog) return;
+                poll->deleteLater();
+                openedIn = dialog->directory().absolutePath();
+                if (pick.isEmpty()) {
+                    dialog->reject();
+                } else {
+                    dialog->selectFile(pick);
+                    QMetaObject::invokeMethod(dialog, "accept"); // protected in QFileDialog
+                }
+            });
+            poll->start(20);
+        };
+        const QString shot = dir.filePath(QStringLiteral("shot.png"));
+        answerNextDialog(shot);
+        QCOMPARE(EditorDialogs::chooseFile(window.get(), FileDialog::ExportImage, {}), shot);
+        QCOMPARE(openedIn, QDir::homePath());
+        for (const FileDialog kind : {FileDialog::Open, FileDialog::Save, FileDialog::ExportMesh,
+                                      FileDialog::PaperImage, FileDialog::SaveRecording}) {
+            openedIn.clear();
+            answerNextDialog({});
+            QCOMPARE(EditorDialogs::chooseFile(window.get(), kind, {}), QString());
+            QCOMPARE(openedIn, QDir(dir.path()).absolutePath());
+        }
+        // Save offers the sheet's own file when it has one.
+        QCOMPARE(EditorDialogs::startingPlace(FileDialog::Save, QStringLiteral("/x/y.paper")),
+                 QStringLiteral("/x/y.paper"));
+        // A folder gone since is not offered.
+        QSettings().setValue(QStringLiteral("dialogs/lastFolder"), dir.filePath("gone"));
+        QCOMPARE(EditorDialogs::startingPlace(FileDialog::Open, {}), QDir::homePath());
+        QSettings().remove(QStringLiteral("dialogs/lastFolder"));
     }
 
     // An edit's status carries the cost of the last step taken, not 0: after an undo a

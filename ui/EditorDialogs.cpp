@@ -3,34 +3,56 @@
 #include "Subdivision.h"
 
 #include <QColorDialog>
+#include <QDir>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QInputDialog>
 #include <QLabel>
+#include <QSettings>
 #include <algorithm>
 
 namespace pf {
 
+namespace {
+const QString kLastFolderKey = QStringLiteral("dialogs/lastFolder");
+} // namespace
+
+QString EditorDialogs::startingPlace(FileDialog kind, const QString& current) {
+    if (kind == FileDialog::Save && !current.isEmpty()) return current;
+    const QString last = QSettings().value(kLastFolderKey).toString();
+    return !last.isEmpty() && QFileInfo(last).isDir() ? last : QDir::homePath();
+}
+
 QString EditorDialogs::chooseFile(QWidget* parent, FileDialog kind, const QString& current) {
     const QString sheets = tr("PaperFold sheets (*.paper)");
+    const QString from = startingPlace(kind, current);
+    QString chosen;
     switch (kind) {
     case FileDialog::Open:
-        return QFileDialog::getOpenFileName(parent, tr("Open Sheet"), QString(), sheets);
+        chosen = QFileDialog::getOpenFileName(parent, tr("Open Sheet"), from, sheets);
+        break;
     case FileDialog::Save:
-        return QFileDialog::getSaveFileName(parent, tr("Save Sheet"), current, sheets);
+        chosen = QFileDialog::getSaveFileName(parent, tr("Save Sheet"), from, sheets);
+        break;
     case FileDialog::ExportImage:
-        return QFileDialog::getSaveFileName(parent, tr("Export Image"), QString(),
-                                            tr("PNG images (*.png)"));
+        chosen = QFileDialog::getSaveFileName(parent, tr("Export Image"), from,
+                                              tr("PNG images (*.png)"));
+        break;
     case FileDialog::ExportMesh:
-        return QFileDialog::getSaveFileName(parent, tr("Export Mesh"), QString(),
-                                            tr("Meshes (*.obj *.ply *.glb)"));
+        chosen = QFileDialog::getSaveFileName(parent, tr("Export Mesh"), from,
+                                              tr("Meshes (*.obj *.ply *.glb)"));
+        break;
     case FileDialog::PaperImage:
-        return QFileDialog::getOpenFileName(parent, tr("Picture for the Paper"), QString(),
-                                            tr("Images (*.png *.jpg *.jpeg *.bmp *.webp)"));
+        chosen = QFileDialog::getOpenFileName(parent, tr("Picture for the Paper"), from,
+                                              tr("Images (*.png *.jpg *.jpeg *.bmp *.webp)"));
+        break;
     case FileDialog::SaveRecording:
-        return QFileDialog::getSaveFileName(parent, tr("Save Recording"), QString(),
-                                            tr("PaperFold recordings (*.paperrec)"));
+        chosen = QFileDialog::getSaveFileName(parent, tr("Save Recording"), from,
+                                              tr("PaperFold recordings (*.paperrec)"));
+        break;
     }
-    return QString();
+    if (!chosen.isEmpty()) QSettings().setValue(kLastFolderKey, QFileInfo(chosen).absolutePath());
+    return chosen;
 }
 
 void EditorDialogs::showError(QWidget* parent, const QString& message) {

@@ -18,8 +18,13 @@ class EditorDialogs {
     Q_DECLARE_TR_FUNCTIONS(pf::EditorDialogs)
 
   public:
-    // Empty when cancelled. `current`: the sheet's file, offered by Save.
+    // Empty when cancelled. `current`: the sheet's file, offered by Save. Every file
+    // dialog opens in the folder of the last file chosen in one (kept between sessions);
+    // they all opened in the folder the editor was started from.
     static QString chooseFile(QWidget* parent, FileDialog kind, const QString& current);
+    // Where chooseFile's dialog for `kind` opens: `current` for Save when there is one,
+    // else the last folder a file was chosen in, else the home folder.
+    static QString startingPlace(FileDialog kind, const QString& current);
     static void showError(QWidget* parent, const QString& message);
     static QMessageBox::StandardButton askToSave(QWidget* parent);
     // "width x height": an invalid QSize when cancelled, 0 x 0 when unreadable. Offers
