@@ -2265,6 +2265,24 @@ class TestEditor : public QObject {
         QTest::qWait(200);
         QVERIFY(framed(fresh));
         window->simulation()->setPlaying(false);
+        // A sheet in the air is framed with the desk under it: New ▸ drop's sheet fell out
+        // of the bottom of the view.
+        window->newScene(QStringLiteral("drop"));
+        window->simulation()->sync();
+        const World drop = *worldOf(*window);
+        QVERIFY(middle(drop.sheet.verts.x).y() > drop.groundHeight + 0.1);
+        const auto inView = [&](const Vec3& at) {
+            const OrbitCamera& c = window->viewport()->camera();
+            const Viewport* v = window->viewport();
+            const Eigen::Vector4d clip = c.projection(double(v->width()) / v->height()) * c.view() *
+                                         Eigen::Vector4d(at.x(), at.y(), at.z(), 1.0);
+            return clip.w() > 0.0 && std::abs(clip.x()) <= clip.w() &&
+                   std::abs(clip.y()) <= clip.w();
+        };
+        QTRY_VERIFY(
+            std::all_of(drop.sheet.verts.x.begin(), drop.sheet.verts.x.end(), [&](const Vec3& x) {
+                return inView(x) && inView(Vec3(x.x(), drop.groundHeight, x.z()));
+            }));
     }
 
     // Tools ▸ Pin: a click pins the paper around the point, which then stands still
