@@ -1108,36 +1108,27 @@ class TestEditor : public QObject {
         st.hinges = 2;
         st.playing = true; // paused, the step readout says so
         st.stepSeconds = 12e-6;
-        readout.show(st);
-        QStringList shown;
-        for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
-        QVERIFY2(shown.contains(
-                     QStringLiteral("494 vertices · 2700 springs · 1 break (1/s) · 2 hinges")),
-                 qPrintable(shown.join(QStringLiteral(" | "))));
-        QVERIFY(shown.contains(QStringLiteral("step 12 µs")));
+        // The readout's texts once it has shown `st`, and whether one of them is `text`.
+        const auto shows = [&](const QString& text) {
+            readout.show(st);
+            QStringList shown;
+            for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
+            if (!shown.contains(text)) qWarning() << "shown:" << shown.join(QStringLiteral(" | "));
+            return shown.contains(text);
+        };
+        QVERIFY(shows(QStringLiteral("494 vertices · 2700 springs · 1 break (1/s) · 2 hinges")));
+        QVERIFY(shows(QStringLiteral("step 12 µs")));
         st.asleep = true;
-        readout.show(st);
-        shown.clear();
-        for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
-        QVERIFY2(shown.contains(QStringLiteral("step 12 µs · at rest")),
-                 qPrintable(shown.join(QStringLiteral(" | "))));
+        QVERIFY(shows(QStringLiteral("step 12 µs · at rest")));
         // Frozen by a Settle it says so, even if it runs slowly (it read "step 1 µs").
         st.settled = true;
         st.pace = 0.1;
-        readout.show(st);
-        shown.clear();
-        for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
-        QVERIFY2(shown.contains(QStringLiteral("step 12 µs · settled")),
-                 qPrintable(shown.join(QStringLiteral(" | "))));
+        QVERIFY(shows(QStringLiteral("step 12 µs · settled")));
         st.settled = false;
         st.pace = 1.0;
         // Asleep for less than a tick, no step's cost is a sleeping one's yet.
         st.stepSeconds = 0.0;
-        readout.show(st);
-        shown.clear();
-        for (const QLabel* label : bar.findChildren<QLabel*>()) shown << label->text();
-        QVERIFY2(shown.contains(QStringLiteral("at rest")),
-                 qPrintable(shown.join(QStringLiteral(" | "))));
+        QVERIFY(shows(QStringLiteral("at rest")));
         QVERIFY(!installLanguage(QStringLiteral("fr")));
         QCOMPARE(name(Kind::Pin, 1), QStringLiteral("Pin 1 vertex"));
         QVERIFY(installLanguage(QStringLiteral("de")));
