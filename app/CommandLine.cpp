@@ -62,8 +62,8 @@ void refuseWithout(const QCommandLineParser& parser, std::initializer_list<const
 bool sameOutput(const QString& a, const QString& b) {
     const QFileInfo x(a), y(b);
     if (QDir::cleanPath(x.absoluteFilePath()) == QDir::cleanPath(y.absoluteFilePath())) return true;
-    struct stat sx {
-    }, sy{};
+    struct stat sx {};
+    struct stat sy {};
     return stat(QFile::encodeName(a).constData(), &sx) == 0 &&
            stat(QFile::encodeName(b).constData(), &sy) == 0 && sx.st_dev == sy.st_dev &&
            sx.st_ino == sy.st_ino;

@@ -112,7 +112,7 @@ int runCommand(const QStringList& args, QTextStream& err) {
 // encoding ("a\xff.paper") became "a\uFFFD.paper", so --save wrote a file of another
 // name and --load found none. A name with a control character in it (a newline, an
 // escape) was printed as it is: a result line split in two, a terminal's title set.
-// Why argument k may not be used, or nothing.
+// Why an argument may not be used, or nothing if it may.
 std::optional<QString> whyArgumentRefused(const char* argument) {
     const QByteArrayView bytes(argument);
     if (!bytes.isValidUtf8())
