@@ -2289,10 +2289,13 @@ class TestEditor : public QObject {
                     window->viewport()->snapshot()->x == worldOf(*window)->sheet.verts.x);
         Viewport* view = window->viewport();
         window->action("tool.pin")->trigger();
-        QPoint p = viewportCentre(*window);
+        // The sheet in the air is framed with the desk under it: it lies above the middle
+        // of the view, or below it, by some way.
+        const QPoint centre = viewportCentre(*window);
+        QPoint p = centre;
         std::optional<PickHit> hit;
-        for (int k = 0; k < 20 && !(hit && hit->onSheet); ++k)
-            hit = pickAt(*window, p += QPoint(0, 5));
+        for (int k = 1; k <= 80 && !(hit && hit->onSheet); ++k)
+            hit = pickAt(*window, p = centre + QPoint(0, (k % 2 ? 5 : -5) * ((k + 1) / 2)));
         QVERIFY(hit && hit->onSheet);
         QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
         QTest::mouseClick(view, Qt::LeftButton, {}, p);
