@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <fcntl.h>
+#include <optional>
 #include <random>
 #include <sys/stat.h>
 #include <system_error>
@@ -137,6 +138,7 @@ QString checkOutputPath(const QString& path, const QStringList& inputs) {
     // removed at once.
     for (int attempt = 0; attempt < 16; ++attempt) {
         const QByteArray probe = temporaryName(target.path, attempt);
+        const UnfinishedOutput unfinished(probe); // a Ctrl+C meanwhile removes it
         const int fd = ::open(probe.constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
         if (fd >= 0) {
             ::close(fd);
@@ -161,16 +163,23 @@ bool writeOutputFile(const QString& path, const QByteArray& bytes, QString* erro
 
     QByteArray temp;
     int fd = -1;
+    // A Ctrl+C removes the temporary file. Named before it is made, so that there is no
+    // moment when it exists unnamed (a kill the moment it appeared left it, once in CI).
+    std::optional<UnfinishedOutput> unfinished;
     for (int attempt = 0; fd < 0 && attempt < 16; ++attempt) {
         temp = temporaryName(target.path, attempt);
+        unfinished.emplace(temp);
         // 0666 less the umask, like any new file; an existing file keeps its mode below.
         fd = ::open(temp.constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd < 0 && errno != EEXIST)
-            return failWith(QStringLiteral("cannot write '%1': %2").arg(path, osReason(errno)));
+        if (fd < 0) {
+            const int why = errno;
+            unfinished.reset(); // not ours: another writer's, or none
+            if (why != EEXIST)
+                return failWith(QStringLiteral("cannot write '%1': %2").arg(path, osReason(why)));
+        }
     }
     if (fd < 0)
         return failWith(QStringLiteral("cannot write '%1': no free temporary name").arg(path));
-    const UnfinishedOutput unfinished(temp); // a Ctrl+C from here on removes it
 
     int err = 0;
     bool ok = writeAll(fd, bytes, &err);
