@@ -772,9 +772,9 @@ class TestSimulateCli : public QObject {
         QVERIFY(r.exitCode > 0);
         const QString err = QString::fromUtf8(r.err).trimmed();
         QVERIFY2(err.contains(mentions), qPrintable(err));
-        // One line of ours (libpng printed "libpng error: Not a PNG file" before it).
-        QVERIFY2(!err.contains(QLatin1Char('\n')) && err.startsWith(QLatin1String("paperfold: ")),
-                 qPrintable(err));
+        // Ours first (libpng printed "libpng error: Not a PNG file" before it). Not the only
+        // line: under AddressSanitizer the leak checker reports its suppressions after it.
+        QVERIFY2(err.startsWith(QLatin1String("paperfold: ")), qPrintable(err));
         QVERIFY(!QFileInfo::exists(QStringLiteral("/tmp/pf-not-png-test.txt")));
     }
 
