@@ -611,35 +611,15 @@ class TestEditor : public QObject {
         QSettings().remove(QStringLiteral("dialogs/lastFolder"));
         QCOMPARE(EditorDialogs::startingPlace(FileDialog::Open, {}), QDir::homePath());
         QTemporaryDir dir;
-        QString openedIn;
-        // Answers the next file dialog with `pick` (cancels it if empty), noting its folder.
-        const auto answerNextDialog = [&](const QString& pick) {
-            auto* poll = new QTimer(window.get());
-            connect(poll, &QTimer::timeout, poll, [poll, pick, &openedIn] {
-                auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
-                if (!dialog) return;
-                poll->deleteLater();
-                openedIn = dialog->directory().absolutePath();
-                if (pick.isEmpty()) {
-                    dialog->reject();
-                } else {
-                    dialog->selectFile(pick);
-                    QMetaObject::invokeMethod(dialog, "accept"); // protected in QFileDialog
-                }
-            });
-            poll->start(20);
-        };
-        const QString shot = dir.filePath(QStringLiteral("shot.png"));
-        answerNextDialog(shot);
-        QCOMPARE(EditorDialogs::chooseFile(window.get(), FileDialog::ExportImage, {}), shot);
-        QCOMPARE(openedIn, QDir::homePath());
-        for (const FileDialog kind : {FileDialog::Open, FileDialog::Save, FileDialog::ExportMesh,
-                                      FileDialog::PaperImage, FileDialog::SaveRecording}) {
-            openedIn.clear();
-            answerNextDialog({});
-            QCOMPARE(EditorDialogs::chooseFile(window.get(), kind, {}), QString());
-            QCOMPARE(openedIn, QDir(dir.path()).absolutePath());
-        }
+        EditorDialogs::rememberChosen(dir.filePath(QStringLiteral("shot.png")));
+        for (const FileDialog kind :
+             {FileDialog::Open, FileDialog::Save, FileDialog::ExportImage, FileDialog::ExportMesh,
+              FileDialog::PaperImage, FileDialog::SaveRecording})
+            QCOMPARE(EditorDialogs::startingPlace(kind, {}), QDir(dir.path()).absolutePath());
+        // A cancelled dialog chose nothing: the folder stays.
+        EditorDialogs::rememberChosen({});
+        QCOMPARE(EditorDialogs::startingPlace(FileDialog::Open, {}),
+                 QDir(dir.path()).absolutePath());
         // Save offers the sheet's own file when it has one.
         QCOMPARE(EditorDialogs::startingPlace(FileDialog::Save, QStringLiteral("/x/y.paper")),
                  QStringLiteral("/x/y.paper"));

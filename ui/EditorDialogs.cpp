@@ -51,8 +51,12 @@ QString EditorDialogs::chooseFile(QWidget* parent, FileDialog kind, const QStrin
                                               tr("PaperFold recordings (*.paperrec)"));
         break;
     }
-    if (!chosen.isEmpty()) QSettings().setValue(kLastFolderKey, QFileInfo(chosen).absolutePath());
+    rememberChosen(chosen);
     return chosen;
+}
+
+void EditorDialogs::rememberChosen(const QString& chosen) {
+    if (!chosen.isEmpty()) QSettings().setValue(kLastFolderKey, QFileInfo(chosen).absolutePath());
 }
 
 void EditorDialogs::showError(QWidget* parent, const QString& message) {

@@ -25,6 +25,8 @@ class EditorDialogs {
     // Where chooseFile's dialog for `kind` opens: `current` for Save when there is one,
     // else the last folder a file was chosen in, else the home folder.
     static QString startingPlace(FileDialog kind, const QString& current);
+    // Notes the folder of a file chosen in a dialog, where the next one opens.
+    static void rememberChosen(const QString& chosen);
     static void showError(QWidget* parent, const QString& message);
     static QMessageBox::StandardButton askToSave(QWidget* parent);
     // "width x height": an invalid QSize when cancelled, 0 x 0 when unreadable. Offers
