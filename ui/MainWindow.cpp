@@ -473,10 +473,7 @@ void MainWindow::createActions() {
                 sim_->stepOnce();
             });
     connect(make("settle", QKeySequence(tr("Ctrl+K"))), &QAction::triggered, this, [this] {
-        if (input_->toolPressed()) { // not in the middle of a push; silent, it seemed lost
-            statusBar()->showMessage(tr("Not now: the mouse holds the paper. Let go first."), 5000);
-            return;
-        }
+        if (refusedWhileThePaperIsHeld()) return;
         if (foldUnderWay_) {
             statusBar()->showMessage(tr("Not now: a fold is under way."), 5000);
             return;
@@ -489,11 +486,7 @@ void MainWindow::createActions() {
     connect(make("reset", QKeySequence(tr("Ctrl+R")), QStyle::SP_BrowserReload),
             &QAction::triggered, this, [this] {
                 // An undo step, so nothing to ask: Edit ▸ Undo gives the sheet back.
-                if (input_->toolPressed()) { // not in the middle of a push
-                    statusBar()->showMessage(
-                        tr("Not now: the mouse holds the paper. Let go first."), 5000);
-                    return;
-                }
+                if (refusedWhileThePaperIsHeld()) return;
                 if (foldUnderWay_) {
                     statusBar()->showMessage(tr("Not now: a fold is under way."), 5000);
                     return;
@@ -795,6 +788,13 @@ void MainWindow::setEditUnderWay(bool folding, bool settling) {
     foldUnderWay_ = folding;
     settleUnderWay_ = settling;
     gateUndo();
+}
+
+bool MainWindow::refusedWhileThePaperIsHeld() {
+    // Not in the middle of a push; said, for a silent refusal seemed lost.
+    if (!input_->toolPressed()) return false;
+    statusBar()->showMessage(tr("Not now: the mouse holds the paper. Let go first."), 5000);
+    return true;
 }
 
 void MainWindow::gateUndo() {

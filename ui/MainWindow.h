@@ -156,6 +156,8 @@ class MainWindow : public QMainWindow {
     // a Settle settles, the mouse holds the paper, or (Undo and Redo only) the simulation
     // has not answered the last click or release yet.
     void gateUndo();
+    // Settle and Reset wait while the mouse holds the paper: says so, and returns true.
+    bool refusedWhileThePaperIsHeld();
     // What the status bar says to a fold: that it began, or why it was refused.
     static QString foldAnswerText(FoldRefusal refusal);
     QString file_;

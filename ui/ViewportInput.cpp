@@ -72,18 +72,10 @@ void ViewportInput::fitCamera() {
     if (!snap || snap->x.empty()) return;
     OrbitCamera c = viewport_->camera();
     // The sheet and the desk under it: a sheet framed in the air (New ▸ drop) fell out of
-    // the bottom of the view. Its box's corners on the desk are framed with it.
+    // the bottom of the view. Each point's place on the desk is framed with it.
     std::vector<Vec3> framed = snap->x;
-    if (snap->groundEnabled) {
-        Vec3 lo = framed.front(), hi = lo;
-        for (const Vec3& p : snap->x) {
-            lo = lo.cwiseMin(p);
-            hi = hi.cwiseMax(p);
-        }
-        const double desk = snap->groundHeight;
-        framed.push_back(Vec3(lo.x(), desk, lo.z()));
-        framed.push_back(Vec3(hi.x(), desk, hi.z()));
-    }
+    if (snap->groundEnabled)
+        for (const Vec3& p : snap->x) framed.push_back(Vec3(p.x(), snap->groundHeight, p.z()));
     c.fitPoints(framed, double(std::max(1, viewport_->width())) / std::max(1, viewport_->height()));
     viewport_->setCamera(c);
     toolFollowsTheView();
