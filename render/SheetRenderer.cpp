@@ -286,8 +286,12 @@ void SheetRenderer::buildLines(const SheetSnapshot& snap, const RenderOptions& o
         });
     if (options.overlays & OverlayBreakProbability)
         batch(1.4f, [&] {
+            // Below a thousandth of the scale an edge is drawn in the colour of its 0, and
+            // there it is rounding, not load: a flat sheet at rest reads P of 1e-16 on a
+            // scattered zigzag of edges, which was drawn as a dark-blue lattice.
+            const double shown = options.probabilityRange / 1000.0;
             for (std::size_t s = 0; s < n; ++s) {
-                if (!(snap.breakProbability[s] > 0.0f)) continue;
+                if (!(snap.breakProbability[s] >= shown)) continue;
                 const auto h = heatColor(snap.breakProbability[s] / options.probabilityRange);
                 const float c[4] = {h[0], h[1], h[2], 1.0f};
                 pushLine(lineData_, x[snap.springEnds[s][0]], x[snap.springEnds[s][1]], c);

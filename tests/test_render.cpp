@@ -15,10 +15,13 @@
 #include "RenderCases.h"
 #include "SceneScript.h"
 #include "Scenes.h"
+#include "SheetSnapshot.h"
+#include "Simulation.h"
 
 #include <QDir>
 #include <QLocale>
 #include <QTest>
+#include <algorithm>
 
 using namespace pf;
 
@@ -184,6 +187,35 @@ class TestRender : public QObject {
         with.overlays = overlay;
         const ImageDifference d = compareImages(draw(plain), draw(with));
         QVERIFY2(d.differingFraction > 0.002, qPrintable(QString::number(d.differingFraction)));
+    }
+
+    // A flat sheet at rest carries no load that could break it. The rounding of its
+    // springs' lengths gave P of 1e-16 on a scattered zigzag of edges, drawn as a lattice
+    // of dark-blue lines, the colour of the scale's 0.
+    void aSheetAtRestShowsNoBreakProbability() {
+        Simulation sim(*makeScene("drop"));
+        for (int k = 0; k < 3000 && !sim.asleep(); ++k) sim.step();
+        QVERIFY(sim.asleep());
+        const SheetSnapshot resting = makeSnapshot(sim);
+        QVERIFY(std::ranges::any_of(resting.breakProbability, [](float p) { return p > 0.0f; }));
+        const OrbitCamera camera = [&] {
+            OrbitCamera c = namedView("top").value();
+            c.fitPoints(resting.x, double(kWidth) / kHeight);
+            return c;
+        }();
+        RenderOptions plain;
+        plain.legend = false;
+        RenderOptions overlay = plain;
+        overlay.overlays = OverlayBreakProbability;
+        const QImage paper = renderer->render(resting, camera, plain);
+        QCOMPARE(compareImages(paper, renderer->render(resting, camera, overlay)).differingFraction,
+                 0.0);
+        // A load the scale shows, a hundredth of its range on each edge, is drawn.
+        SheetSnapshot loaded = resting;
+        ++loaded.serial; // another snapshot's: the renderer keeps a snapshot's lines
+        std::ranges::fill(loaded.breakProbability, float(overlay.probabilityRange / 100.0));
+        const ImageDifference d = compareImages(paper, renderer->render(loaded, camera, overlay));
+        QVERIFY2(d.differingFraction > 0.01, qPrintable(QString::number(d.differingFraction)));
     }
 
     void thePaperIsInThePicture() {

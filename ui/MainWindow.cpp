@@ -737,10 +737,13 @@ void MainWindow::changeEvent(QEvent* event) {
 void MainWindow::onSnapshot() {
     auto snap = sim_->latestSnapshot();
     if (!snap) return;
+    const bool anew = snap != viewport_->sharedSnapshot(); // not a sheet at rest's again
     viewport_->setSnapshot(snap);
     if (firstSnapshot_) {
         firstSnapshot_ = false;
         input_->fitCamera();
+    } else if (anew) {
+        input_->toolFollowsTheView(); // the paper under the hovering tool may have moved
     }
     const SimulationStatus st = sim_->status();
     lastHash_ = st.sheetHash;

@@ -191,6 +191,10 @@ void ViewportInput::showToolUnderCursor() {
 
 void ViewportInput::toolFollowsTheView() {
     if (tool_ != Tool::Push || !toolShown_ || toolPressed_ || !toolPixel_) return;
+    const auto hit = pick(*toolPixel_);
+    // A tenth of a millimetre is no move anyone sees, and each move is a command the
+    // session records: a sheet at rest, or one moving elsewhere, leaves the tool be.
+    if (!hit || (toolCenter(*hit, toolRadius_, 0.0) - toolTarget_).norm() < 1e-4) return;
     pointTool(*toolPixel_, false);
 }
 

@@ -35,7 +35,8 @@ class ViewportInput : public QObject {
     void showToolUnderCursor();
     // The hovering sphere put back under the pixel the cursor last pointed it from, after
     // the view or the sheet under it changed without the mouse moving: after Open and
-    // Reset it hung where the old framing had put it until the mouse moved.
+    // Reset it hung where the old framing had put it until the mouse moved; paper that
+    // sprang back after a push rose through it, and a sheet that fell left it in the air.
     void toolFollowsTheView();
     void setTool(Tool tool);
     // The sheet let go of a held grab (an undo or redo): the hand holds nothing until the
