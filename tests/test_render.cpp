@@ -12,6 +12,7 @@
 #include "JacobiScene.h"
 #include "Legend.h"
 #include "OffscreenRenderer.h"
+#include "Picking.h"
 #include "RenderCases.h"
 #include "SceneScript.h"
 #include "Scenes.h"
@@ -22,6 +23,7 @@
 #include <QLocale>
 #include <QTest>
 #include <algorithm>
+#include <cmath>
 
 using namespace pf;
 
@@ -216,6 +218,44 @@ class TestRender : public QObject {
         std::ranges::fill(loaded.breakProbability, float(overlay.probabilityRange / 100.0));
         const ImageDifference d = compareImages(paper, renderer->render(loaded, camera, overlay));
         QVERIFY2(d.differingFraction > 0.01, qPrintable(QString::number(d.differingFraction)));
+    }
+
+    // The hovering sphere touches no paper: resting on a sheet's lower layer beside a
+    // flap folded 1 cm over it, it went into the flap's edge (12 mm deep over the fold
+    // scene's sheet from the editor's view). It is moved back along the ray until it
+    // clears it: by hand, its centre rises to 1 cm + sqrt(r² - 5 mm²) over the layer.
+    void theHoveringSphereRestsClearOfOtherPaper() {
+        SheetSnapshot sheet;
+        const auto square = [&](double x0, double x1, double y) {
+            const Index first = Index(sheet.x.size());
+            for (const auto& [x, z] : {std::pair{x0, -0.1}, {x1, -0.1}, {x1, 0.1}, {x0, 0.1}})
+                sheet.x.emplace_back(x, y, z);
+            sheet.tris.push_back(Triangle{{first, first + 1, first + 2}, {}});
+            sheet.tris.push_back(Triangle{{first, first + 2, first + 3}, {}});
+        };
+        square(-0.1, 0.1, 0.0);
+        const double r = 0.03;
+        const auto down = [](double x) {
+            return OrbitCamera::Ray{Vec3(x, 1.0, 0.0), -Vec3::UnitY()};
+        };
+        // One layer: resting on it, as toolCenter puts it.
+        for (double x : {-0.005, -0.05}) {
+            const auto hit = pickSheet(sheet, down(x));
+            QVERIFY(hit && hit->onSheet);
+            QCOMPARE(restingToolCenter(sheet, down(x), *hit, r), toolCenter(*hit, r, 0.0));
+        }
+        square(0.0, 0.1, 0.01); // the flap, over x > 0
+        const auto hit = pickSheet(sheet, down(-0.005));
+        QVERIFY(hit && hit->onSheet && hit->point.y() == 0.0);
+        const Vec3 c = restingToolCenter(sheet, down(-0.005), *hit, r);
+        QCOMPARE(c.x(), -0.005);
+        QCOMPARE(c.z(), 0.0);
+        const double expected = 0.01 + std::sqrt(r * r - 0.005 * 0.005);
+        QVERIFY2(std::abs(c.y() - expected) < 1e-6,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(c.y()).arg(expected)));
+        // Away from the flap, where the sphere clears it, it is not moved.
+        const auto far = pickSheet(sheet, down(-0.05));
+        QCOMPARE(restingToolCenter(sheet, down(-0.05), *far, r), toolCenter(*far, r, 0.0));
     }
 
     void thePaperIsInThePicture() {

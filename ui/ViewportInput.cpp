@@ -90,10 +90,21 @@ void ViewportInput::setView(const char* name) {
     toolFollowsTheView();
 }
 
+std::optional<Vec3> ViewportInput::toolCenterAt(const QPoint& pixel, bool pressed) const {
+    const SheetSnapshot* snap = viewport_->snapshot();
+    if (!snap) return std::nullopt;
+    const OrbitCamera::Ray ray = rayAt(pixel);
+    const auto hit = pickSheet(*snap, ray);
+    if (!hit) return std::nullopt;
+    // Pressed, it reaches into the paper; hovering, it touches none.
+    return pressed ? toolCenter(*hit, toolRadius_, pushDepth_ * toolRadius_)
+                   : restingToolCenter(*snap, ray, *hit, toolRadius_);
+}
+
 void ViewportInput::pointTool(const QPoint& pixel, bool pressed) {
-    const auto hit = pick(pixel);
-    if (!hit) return;
-    toolTarget_ = toolCenter(*hit, toolRadius_, pressed ? pushDepth_ * toolRadius_ : 0.0);
+    const auto center = toolCenterAt(pixel, pressed);
+    if (!center) return;
+    toolTarget_ = *center;
     const bool began = pressed && !toolPressed_;
     toolPressed_ = pressed;
     toolShown_ = true;
@@ -191,10 +202,10 @@ void ViewportInput::showToolUnderCursor() {
 
 void ViewportInput::toolFollowsTheView() {
     if (tool_ != Tool::Push || !toolShown_ || toolPressed_ || !toolPixel_) return;
-    const auto hit = pick(*toolPixel_);
+    const auto center = toolCenterAt(*toolPixel_, false);
     // A tenth of a millimetre is no move anyone sees, and each move is a command the
     // session records: a sheet at rest, or one moving elsewhere, leaves the tool be.
-    if (!hit || (toolCenter(*hit, toolRadius_, 0.0) - toolTarget_).norm() < 1e-4) return;
+    if (!center || (*center - toolTarget_).norm() < 1e-4) return;
     pointTool(*toolPixel_, false);
 }
 
