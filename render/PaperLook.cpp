@@ -1,6 +1,7 @@
 #include "PaperLook.h"
 
 #include "InputFile.h"
+#include "PngDecode.h"
 
 #include <QBuffer>
 #include <QColor>
@@ -101,32 +102,38 @@ bool loadPaperImage(const QString& path, QImage* image, QString* error) {
     // Qt's reader waiting for a writer forever, and a folder read "File not found".
     const std::optional<QByteArray> bytes = readInputFile(path, kMaxTextureFileBytes, error);
     if (!bytes) return false;
-    QBuffer buffer;
-    buffer.setData(*bytes);
-    buffer.open(QIODevice::ReadOnly);
-    QImageReader reader(&buffer);
-    reader.setAutoTransform(true);
-    const QSize size = reader.size();
     // Past this a header is lying or the picture is not meant for paper; refusing
     // before decoding keeps a hostile file from taking the memory.
     constexpr int kMaxReadSide = 65536;
-    if (size.isValid() && (size.width() > kMaxReadSide || size.height() > kMaxReadSide)) {
-        if (error)
-            *error = QStringLiteral("%1 is %2 x %3 pixels, too large for a paper texture")
-                         .arg(QFileInfo(path).fileName())
-                         .arg(size.width())
-                         .arg(size.height());
+    const QString name = QFileInfo(path).fileName();
+    const auto fail = [&](const QString& why) {
+        if (error) *error = QStringLiteral("%1: %2").arg(name, why);
         return false;
-    }
-    // Scaling while decoding keeps a huge photo from taking its full size in memory
-    // (where the format can: JPEG).
-    if (size.isValid() && std::max(size.width(), size.height()) > kMaxTextureSide)
-        reader.setScaledSize(size.scaled(kMaxTextureSide, kMaxTextureSide, Qt::KeepAspectRatio));
-    QImage read = reader.read();
-    if (read.isNull()) {
-        if (error)
-            *error = QStringLiteral("%1: %2").arg(QFileInfo(path).fileName(), reader.errorString());
-        return false;
+    };
+    QImage read;
+    if (hasPngSignature(*bytes)) {
+        // Not through Qt's reader, whose libpng printed its own line of a damaged PNG.
+        QString why;
+        read = decodePng(*bytes, kMaxReadSide, &why);
+        if (read.isNull()) return fail(why);
+    } else {
+        QBuffer buffer;
+        buffer.setData(*bytes);
+        buffer.open(QIODevice::ReadOnly);
+        QImageReader reader(&buffer);
+        reader.setAutoTransform(true);
+        const QSize size = reader.size();
+        if (size.isValid() && (size.width() > kMaxReadSide || size.height() > kMaxReadSide))
+            return fail(QStringLiteral("%1 x %2 pixels, too large for a paper texture")
+                            .arg(size.width())
+                            .arg(size.height()));
+        // Scaling while decoding keeps a huge photo from taking its full size in memory
+        // (where the format can: JPEG).
+        if (size.isValid() && std::max(size.width(), size.height()) > kMaxTextureSide)
+            reader.setScaledSize(
+                size.scaled(kMaxTextureSide, kMaxTextureSide, Qt::KeepAspectRatio));
+        read = reader.read();
+        if (read.isNull()) return fail(reader.errorString());
     }
     if (std::max(read.width(), read.height()) > kMaxTextureSide)
         read = read.scaled(kMaxTextureSide, kMaxTextureSide, Qt::KeepAspectRatio,

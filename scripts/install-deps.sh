@@ -7,7 +7,7 @@ packages=(
     build-essential cmake ninja-build pkg-config clang-format clang libclang-rt-14-dev
     qt6-base-dev libqt6opengl6-dev qt6-charts-dev qt6-tools-dev qt6-l10n-tools qt6-tools-dev-tools
     qt6-translations-l10n
-    libeigen3-dev libosmesa6-dev libgl1-mesa-dri xvfb xauth fonts-dejavu-core fonts-nanum fonts-ipafont-gothic
+    libeigen3-dev libpng-dev libosmesa6-dev libgl1-mesa-dri xvfb xauth fonts-dejavu-core fonts-nanum fonts-ipafont-gothic
     libtinygltf-dev libtinyobjloader-dev libassimp-dev locales
 )
 

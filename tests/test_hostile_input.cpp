@@ -5,12 +5,14 @@
 // Each case is a regression test for a reproduction in the issue that found it.
 #include "OutputFile.h"
 #include "OutputPattern.h"
+#include "PngDecode.h"
 #include "RecordingFile.h"
 #include "ReferenceImage.h"
 #include "Scenes.h"
 #include "SheetFile.h"
 #include "SheetValidation.h"
 
+#include <QBuffer>
 #include <QCryptographicHash>
 #include <QDir>
 #include <QFile>
@@ -486,6 +488,67 @@ class TestHostileInput : public QObject {
             pf::replay(*recording.log, session);
             QCOMPARE(QString::fromStdString(pf::validateSheet(session.world().sheet)), QString());
         }
+    }
+
+    // A damaged PNG, as a texture or a reference, is said in one line of ours with
+    // libpng's words in it: Qt's reader let libpng print "libpng error: IDAT: invalid code
+    // lengths set" on the console first. A sound one decodes to its pixels exactly.
+    void aDamagedPngIsSaidInOurOwnLine() {
+        QImage picture(24, 16, QImage::Format_RGBA8888);
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 24; ++x)
+                picture.setPixelColor(x, y, QColor(10 * x, 15 * y, 255 - 10 * x, 255 - 8 * y));
+        for (const QImage& sound : {picture, picture.convertToFormat(QImage::Format_Grayscale8),
+                                    picture.convertToFormat(QImage::Format_Indexed8)}) {
+            QByteArray bytes;
+            QBuffer buffer(&bytes);
+            buffer.open(QIODevice::WriteOnly);
+            QVERIFY(sound.save(&buffer, "PNG"));
+            QString error;
+            const QImage decoded = pf::decodePng(bytes, 64, &error);
+            QVERIFY2(!decoded.isNull(), qPrintable(error));
+            QCOMPARE(decoded, sound.convertToFormat(QImage::Format_RGBA8888));
+            // Larger than asked: refused before its pixels.
+            QVERIFY(pf::decodePng(bytes, 20, &error).isNull());
+            QCOMPARE(error, QStringLiteral("a 24x16 image is larger than 20 pixels a side"));
+        }
+        QTemporaryDir dir;
+        const QString good = dir.filePath(QStringLiteral("good.png"));
+        QVERIFY(picture.save(good, "PNG"));
+        QFile file(good);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray bytes = file.readAll();
+        QByteArray flipped = bytes;
+        flipped[bytes.indexOf("IDAT") + 10] = char(flipped[bytes.indexOf("IDAT") + 10] ^ 0xff);
+        const QByteArray truncated = bytes.left(bytes.size() / 2);
+        for (const auto& [name, damaged] :
+             {std::pair{"flipped.png", flipped}, std::pair{"truncated.png", truncated}}) {
+            const QString path = dir.filePath(QLatin1String(name));
+            QFile out(path);
+            QVERIFY(out.open(QIODevice::WriteOnly) && out.write(damaged) == damaged.size());
+            out.close();
+            QString error;
+            QVERIFY(pf::decodePng(damaged, 64, &error).isNull());
+            QVERIFY2(error.startsWith(QStringLiteral("a damaged PNG (")) && error.size() > 17,
+                     qPrintable(error));
+            for (const char* option : {"--texture", "--reference"}) {
+                const Result r = runPaperfold({"render", "--resolution", "5", "--size", "32x32",
+                                               QLatin1String(option), path, "--output",
+                                               dir.filePath(QStringLiteral("r.png"))});
+                QCOMPARE(r.exitCode, 1);
+                const QString& err = r.err;
+                QVERIFY2(err.startsWith(QStringLiteral("paperfold: ")) &&
+                             err.contains(QLatin1String(name)) &&
+                             err.contains(QStringLiteral("a damaged PNG (")) &&
+                             !err.contains(QStringLiteral("libpng error")),
+                         qPrintable(err));
+            }
+        }
+        // The sound file is read as a texture.
+        const Result r =
+            runPaperfold({"render", "--resolution", "5", "--size", "32x32", "--texture", good,
+                          "--output", dir.filePath(QStringLiteral("r.png"))});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     }
 
     void devicesAndPipesAreNotRead() {
