@@ -102,9 +102,11 @@ std::optional<Vec3> ViewportInput::toolCenterAt(const QPoint& pixel, bool presse
 }
 
 void ViewportInput::pointTool(const QPoint& pixel, bool pressed) {
-    const auto center = toolCenterAt(pixel, pressed);
-    if (!center) return;
-    toolTarget_ = *center;
+    if (const auto center = toolCenterAt(pixel, pressed)) placeTool(pixel, *center, pressed);
+}
+
+void ViewportInput::placeTool(const QPoint& pixel, const Vec3& center, bool pressed) {
+    toolTarget_ = center;
     const bool began = pressed && !toolPressed_;
     toolPressed_ = pressed;
     toolShown_ = true;
@@ -205,8 +207,7 @@ void ViewportInput::toolFollowsTheView() {
     const auto center = toolCenterAt(*toolPixel_, false);
     // A tenth of a millimetre is no move anyone sees, and each move is a command the
     // session records: a sheet at rest, or one moving elsewhere, leaves the tool be.
-    if (!center || (*center - toolTarget_).norm() < 1e-4) return;
-    pointTool(*toolPixel_, false);
+    if (center && (*center - toolTarget_).norm() >= 1e-4) placeTool(*toolPixel_, *center, false);
 }
 
 void ViewportInput::hideTool() {

@@ -82,6 +82,8 @@ class ViewportInput : public QObject {
     bool handle(QEvent* event);
     void sayIfHoldChanged(bool wasHolding);
     void pointTool(const QPoint& pixel, bool pressed);
+    // The push tool's sphere to `center`, pointed from `pixel`.
+    void placeTool(const QPoint& pixel, const Vec3& center, bool pressed);
     // Where the push tool's centre goes for the cursor at `pixel`; nothing under it, none.
     std::optional<Vec3> toolCenterAt(const QPoint& pixel, bool pressed) const;
     // Grab and Pin: the left button at `pixel` (pressed, moved with it held, released).
