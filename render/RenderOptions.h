@@ -1,6 +1,7 @@
 #pragma once
 
 #include "PaperLook.h"
+#include "Types.h"
 
 #include <QString>
 #include <optional>
@@ -25,6 +26,10 @@ struct RenderOptions {
     unsigned overlays = 0;
     bool ground = true;
     bool sphere = true;
+    // Where a hovering tool is drawn, when the view has placed it on this very picture:
+    // the simulation's sphere was placed on the picture before, and a sheet swinging
+    // under a still cursor went through it.
+    std::optional<Vec3> hoverCenter;
     bool legend = true;
     // Markers on pinned vertices (the editor's pins; a headless render leaves them out).
     bool pins = false;

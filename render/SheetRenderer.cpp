@@ -445,7 +445,8 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
         const SphereTool& sp = snap.sphere;
         Mat4 model = Mat4::Identity();
         model.block<3, 3>(0, 0) *= sp.radius;
-        model.block<3, 1>(0, 3) = sp.center;
+        model.block<3, 1>(0, 3) =
+            sp.hovering && options.hoverCenter ? *options.hoverCenter : sp.center;
         const float tool[3] = {0.35f, 0.52f, 0.82f};
         gl.Enable(GL_BLEND);
         gl.DepthMask(GL_FALSE);

@@ -1057,6 +1057,24 @@ class TestEditor : public QObject {
         QTRY_VERIFY2(resting(), qPrintable(QString::number(worldOf(*window)->sphere.center.y())));
         QVERIFY(worldOf(*window)->sphere.hovering);
         QVERIFY(!window->toolPressed());
+        // It is drawn where the view placed it on the picture shown, not a step behind:
+        // a sheet swinging under a still cursor went through the simulation's sphere.
+        const auto drawnOnThePictureShown = [&] {
+            const auto shown = view->sharedSnapshot();
+            const OrbitCamera::Ray ray = view->camera().rayThroughPixel(
+                p.x() + 0.5, p.y() + 0.5, view->width(), view->height());
+            const auto under = pickSheet(*shown, ray);
+            return under && view->hoverCenter() &&
+                   *view->hoverCenter() == restingToolCenter(*shown, ray, *under, R);
+        };
+        QTRY_VERIFY(drawnOnThePictureShown());
+        // Over the sky it is not drawn: it hung where the cursor had left the desk.
+        window->action("view.front")->trigger();
+        moveMouse(view, QPoint(view->width() / 2, 2));
+        QVERIFY(!pickAt(*window, QPoint(view->width() / 2, 2)));
+        QVERIFY(!view->hoverCenter());
+        window->simulation()->sync();
+        QTRY_VERIFY(!worldOf(*window)->sphere.hovering);
     }
 
     void switchingToKoreanTranslatesTheMenus() {

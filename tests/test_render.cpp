@@ -258,6 +258,32 @@ class TestRender : public QObject {
         QCOMPARE(restingToolCenter(sheet, down(-0.05), *far, r), toolCenter(*far, r, 0.0));
     }
 
+    // The editor places a hovering tool on the picture it draws (RenderOptions::
+    // hoverCenter): the sphere is drawn there, not where the simulation's step put it.
+    void aHoveringToolIsDrawnWhereTheViewPlacedIt() {
+        test::RenderCase c = test::renderCases()[0];
+        c.steps = 0;
+        c.view = "top";
+        SheetSnapshot snap = test::snapshotFor(c);
+        const OrbitCamera camera = test::cameraFor(c, snap, double(kWidth) / kHeight);
+        snap.sphere.active = false;
+        snap.sphere.hovering = true;
+        snap.sphere.radius = 0.03;
+        snap.sphere.center = Vec3(-0.05, 0.03, 0.0);
+        const Vec3 placed(0.06, 0.03, 0.04);
+        RenderOptions options = test::optionsFor(c);
+        options.legend = false;
+        const QImage simulated = renderer->render(snap, camera, options);
+        options.hoverCenter = placed;
+        const QImage drawn = renderer->render(snap, camera, options);
+        SheetSnapshot there = snap;
+        there.sphere.center = placed;
+        options.hoverCenter.reset();
+        QCOMPARE(compareImages(drawn, renderer->render(there, camera, options)).differingFraction,
+                 0.0);
+        QVERIFY(compareImages(drawn, simulated).differingFraction > 0.002);
+    }
+
     void thePaperIsInThePicture() {
         // From the top, the flat sheet of a fresh press scene covers the middle of the
         // image in paper white, brighter than the desk around it.

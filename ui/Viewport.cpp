@@ -144,6 +144,12 @@ void Viewport::setCamera(const OrbitCamera& camera) {
     window_->update();
 }
 
+void Viewport::setHoverCenter(const std::optional<Vec3>& center) {
+    if (center == hoverCenter_) return;
+    hoverCenter_ = center;
+    window_->update();
+}
+
 void Viewport::setFoldLine(const QLine& line) {
     foldLine_ = line;
     window_->update();
@@ -181,8 +187,9 @@ void Viewport::paintGl(unsigned framebuffer) {
     const qreal dpr = window_->devicePixelRatio();
     const int w = static_cast<int>(width() * dpr), h = static_cast<int>(height() * dpr);
     if (renderer_.initialized() && snapshot_) {
-        renderer_.render(*snapshot_, camera_, interactiveOptions(options_, snapshot_->tris.size()),
-                         w, h);
+        RenderOptions options = interactiveOptions(options_, snapshot_->tris.size());
+        options.hoverCenter = hoverCenter_;
+        renderer_.render(*snapshot_, camera_, options, w, h);
     } else {
         QOpenGLFunctions* f = QOpenGLContext::currentContext()->functions();
         f->glClearColor(0.2f, 0.2f, 0.22f, 1.0f);

@@ -54,6 +54,10 @@ class Viewport : public QWidget {
     const QString& hint() const { return hint_; }
     // The fold line being drawn, in the view's pixels; a null line hides it.
     void setFoldLine(const QLine& line);
+    // Where the hovering tool is drawn on the picture shown (RenderOptions::hoverCenter);
+    // none: where the simulation has it.
+    void setHoverCenter(const std::optional<Vec3>& center);
+    const std::optional<Vec3>& hoverCenter() const { return hoverCenter_; }
     const QLine& foldLine() const { return foldLine_; }
 
     // The native window the view draws in (input that reaches it comes to this widget).
@@ -91,6 +95,7 @@ class Viewport : public QWidget {
     QString glError_;
     QString hint_;
     QLine foldLine_;
+    std::optional<Vec3> hoverCenter_;
     double lastFrameSeconds_ = 0.0;
 };
 

@@ -102,11 +102,15 @@ std::optional<Vec3> ViewportInput::toolCenterAt(const QPoint& pixel, bool presse
 }
 
 void ViewportInput::pointTool(const QPoint& pixel, bool pressed) {
-    if (const auto center = toolCenterAt(pixel, pressed)) placeTool(pixel, *center, pressed);
+    if (const auto center = toolCenterAt(pixel, pressed))
+        placeTool(pixel, *center, pressed);
+    else if (!pressed)
+        hideTool(); // over the sky: it hung where the cursor had left the desk
 }
 
 void ViewportInput::placeTool(const QPoint& pixel, const Vec3& center, bool pressed) {
     toolTarget_ = center;
+    viewport_->setHoverCenter(pressed ? std::nullopt : std::optional(center));
     const bool began = pressed && !toolPressed_;
     toolPressed_ = pressed;
     toolShown_ = true;
@@ -207,12 +211,16 @@ void ViewportInput::toolFollowsTheView() {
     const auto center = toolCenterAt(*toolPixel_, false);
     // A tenth of a millimetre is no move anyone sees, and each move is a command the
     // session records: a sheet at rest, or one moving elsewhere, leaves the tool be.
-    if (center && (*center - toolTarget_).norm() >= 1e-4) placeTool(*toolPixel_, *center, false);
+    if (center && (*center - toolTarget_).norm() >= 1e-4)
+        placeTool(*toolPixel_, *center, false);
+    else if (center)
+        viewport_->setHoverCenter(center); // drawn on this picture all the same
 }
 
 void ViewportInput::hideTool() {
     toolPressed_ = false;
     toolPixel_.reset();
+    viewport_->setHoverCenter(std::nullopt);
     if (!toolShown_) return;
     toolShown_ = false;
     sim_->setTool(toolTarget_, toolRadius_, false, false);
