@@ -3,6 +3,7 @@
 #include "Types.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -35,6 +36,12 @@ struct OrbitCamera {
     // lifting the target and then the pitch: seen from under the desk, the desk hid the
     // paper and the pins' marks showed through it.
     static constexpr double kEyeAboveFloor = 0.005;
+    // How far around the target the desk is drawn: it fades into the background from
+    // 0.35 of this to all of it (ground.frag). 1 m at the editor's usual distances, farther
+    // as the camera backs off, so that paper slid off anywhere lies on it.
+    double deskReach() const { return std::max(1.0, 1.6 * distance); }
+    // Within this of the target the desk is drawn at least half as itself.
+    double deskShown() const { return 0.675 * deskReach(); }
     void keepAbove(double floor);
     // Sets the distance so that a sphere of `radius` around `center` fills the view.
     void fit(const Vec3& center, double radius, double aspect);

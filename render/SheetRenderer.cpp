@@ -361,12 +361,10 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
         setMatrix(groundProgram_, "uViewProj", viewProj);
         gl.Uniform1f(gl.GetUniformLocation(groundProgram_, "uGround"), ground);
         setVec3(groundProgram_, "uBackground", kBackground);
-        // Around where the camera looks, reaching 1 m at the editor's usual distances and
-        // farther as the camera backs off, so that paper slid off anywhere lies on it.
+        // Around where the camera looks (OrbitCamera::deskReach).
         const Vec3& t = camera.target;
         gl.Uniform2f(gl.GetUniformLocation(groundProgram_, "uCenter"), float(t.x()), float(t.z()));
-        gl.Uniform1f(gl.GetUniformLocation(groundProgram_, "uReach"),
-                     float(std::max(1.0, 1.6 * camera.distance)));
+        gl.Uniform1f(gl.GetUniformLocation(groundProgram_, "uReach"), float(camera.deskReach()));
         gl.Uniform1f(gl.GetUniformLocation(groundProgram_, "uHeight"), float(height));
         gl.Uniform2f(gl.GetUniformLocation(groundProgram_, "uShade"), kBackgroundShade[0],
                      kBackgroundShade[1]);

@@ -1075,6 +1075,31 @@ class TestEditor : public QObject {
         QVERIFY(!view->hoverCenter());
         window->simulation()->sync();
         QTRY_VERIFY(!worldOf(*window)->sphere.hovering);
+        // Nor where the desk has faded into the background (it looked afloat there, and
+        // as large as on the near desk); on the desk drawn it rests again.
+        const auto deskAt = [&](int row) {
+            const QPoint at(view->width() / 2, row);
+            const auto hit = pickAt(*window, at);
+            const OrbitCamera& camera = view->camera();
+            const double far =
+                hit ? Vec2(hit->point.x() - camera.target.x(), hit->point.z() - camera.target.z())
+                              .norm() /
+                          camera.deskShown()
+                    : 0.0;
+            return std::pair{hit && !hit->onSheet, far};
+        };
+        int faded = -1, shown = -1;
+        for (int row = 0; row < view->height(); ++row) {
+            const auto [desk, far] = deskAt(row);
+            if (desk && far > 1.05 && faded < 0) faded = row;
+            if (desk && far < 0.95) shown = row;
+        }
+        QVERIFY(faded >= 0 && shown >= 0);
+        moveMouse(view, QPoint(view->width() / 2, faded));
+        QVERIFY(!view->hoverCenter());
+        moveMouse(view, QPoint(view->width() / 2, shown));
+        QVERIFY(view->hoverCenter());
+        QVERIFY(std::abs(view->hoverCenter()->y() - (ground + R)) < 1e-9);
     }
 
     void switchingToKoreanTranslatesTheMenus() {

@@ -96,6 +96,12 @@ std::optional<Vec3> ViewportInput::toolCenterAt(const QPoint& pixel, bool presse
     const OrbitCamera::Ray ray = rayAt(pixel);
     const auto hit = pickSheet(*snap, ray);
     if (!hit) return std::nullopt;
+    // Where the desk has faded into the background a sphere resting on it looks afloat.
+    const OrbitCamera& camera = viewport_->camera();
+    const Vec3 fromTarget = hit->point - camera.target;
+    if (!pressed && !hit->onSheet &&
+        Vec2(fromTarget.x(), fromTarget.z()).norm() > camera.deskShown())
+        return std::nullopt;
     // Pressed, it reaches into the paper; hovering, it touches none.
     return pressed ? toolCenter(*hit, toolRadius_, pushDepth_ * toolRadius_)
                    : restingToolCenter(*snap, ray, *hit, toolRadius_);
@@ -105,7 +111,7 @@ void ViewportInput::pointTool(const QPoint& pixel, bool pressed) {
     if (const auto center = toolCenterAt(pixel, pressed))
         placeTool(pixel, *center, pressed);
     else if (!pressed)
-        hideTool(); // over the sky: it hung where the cursor had left the desk
+        hideTool(); // over the sky or the faded desk: it hung there, afloat
 }
 
 void ViewportInput::placeTool(const QPoint& pixel, const Vec3& center, bool pressed) {
