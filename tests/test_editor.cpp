@@ -1100,6 +1100,13 @@ class TestEditor : public QObject {
         moveMouse(view, QPoint(view->width() / 2, shown));
         QVERIFY(view->hoverCenter());
         QVERIFY(std::abs(view->hoverCenter()->y() - (ground + R)) < 1e-9);
+        // And when the view turns the still cursor to where no desk is drawn (looking
+        // down from 10 m up, every ray meets the desk far beyond what is drawn of it).
+        OrbitCamera raised = view->camera();
+        raised.target.y() += 10.0;
+        view->setCamera(raised);
+        window->action("view.iso")->trigger();
+        QVERIFY(!view->hoverCenter());
     }
 
     void switchingToKoreanTranslatesTheMenus() {

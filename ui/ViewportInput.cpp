@@ -217,10 +217,13 @@ void ViewportInput::toolFollowsTheView() {
     const auto center = toolCenterAt(*toolPixel_, false);
     // A tenth of a millimetre is no move anyone sees, and each move is a command the
     // session records: a sheet at rest, or one moving elsewhere, leaves the tool be.
-    if (center && (*center - toolTarget_).norm() >= 1e-4)
+    if (!center) {
+        if (viewport_->snapshot()) hideTool(); // the view turned the cursor to the sky
+    } else if ((*center - toolTarget_).norm() >= 1e-4) {
         placeTool(*toolPixel_, *center, false);
-    else if (center)
+    } else {
         viewport_->setHoverCenter(center); // drawn on this picture all the same
+    }
 }
 
 void ViewportInput::hideTool() {
