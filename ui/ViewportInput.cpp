@@ -215,15 +215,16 @@ void ViewportInput::showToolUnderCursor() {
 void ViewportInput::toolFollowsTheView() {
     if (tool_ != Tool::Push || !toolShown_ || toolPressed_ || !toolPixel_) return;
     const auto center = toolCenterAt(*toolPixel_, false);
-    // A tenth of a millimetre is no move anyone sees, and each move is a command the
-    // session records: a sheet at rest, or one moving elsewhere, leaves the tool be.
     if (!center) {
         if (viewport_->snapshot()) hideTool(); // the view turned the cursor to the sky
-    } else if ((*center - toolTarget_).norm() >= 1e-4) {
-        placeTool(*toolPixel_, *center, false);
-    } else {
-        viewport_->setHoverCenter(center); // drawn on this picture all the same
+        return;
     }
+    // A tenth of a millimetre is no move anyone sees, and each move is a command the
+    // session records: a sheet at rest, or one moving elsewhere, leaves the tool be.
+    if ((*center - toolTarget_).norm() >= 1e-4)
+        placeTool(*toolPixel_, *center, false);
+    else
+        viewport_->setHoverCenter(center); // drawn on this picture all the same
 }
 
 void ViewportInput::hideTool() {
