@@ -427,8 +427,11 @@ class TestEditor : public QObject {
         auto* history = window->findChild<QUndoView*>();
         QVERIFY(history);
         QCOMPARE(history->emptyLabel(), QStringLiteral("<sigma.paper>"));
+        // A new sheet is named by what it was made from (every one was "<new sheet>").
         window->newScene(QStringLiteral("press"));
-        QCOMPARE(history->emptyLabel(), QStringLiteral("<new sheet>"));
+        QCOMPARE(history->emptyLabel(), QStringLiteral("<new: Press (sphere on a sheet)>"));
+        window->newScene(QStringLiteral("drape"));
+        QCOMPARE(history->emptyLabel(), QStringLiteral("<new: Drape (hanging sheet)>"));
     }
 
     void aSliderDragIsOneUndoStep() {

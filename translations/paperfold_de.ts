@@ -676,6 +676,10 @@
         <source>Not now: the mouse holds the paper. Let go first.</source>
         <translation>Nicht jetzt: Die Maus hält das Papier. Erst loslassen.</translation>
     </message>
+    <message>
+        <source>&lt;new: %1&gt;</source>
+        <translation>&lt;neues Blatt: %1&gt;</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

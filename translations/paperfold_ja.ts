@@ -671,6 +671,10 @@
         <source>Not now: the mouse holds the paper. Let go first.</source>
         <translation>今はできません：マウスが紙を押さえています。先に離してください。</translation>
     </message>
+    <message>
+        <source>&lt;new: %1&gt;</source>
+        <translation>&lt;新しいシート: %1&gt;</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

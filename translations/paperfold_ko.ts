@@ -671,6 +671,10 @@
         <source>Not now: the mouse holds the paper. Let go first.</source>
         <translation>지금은 할 수 없습니다: 마우스가 종이를 잡고 있습니다. 먼저 놓으세요.</translation>
     </message>
+    <message>
+        <source>&lt;new: %1&gt;</source>
+        <translation>&lt;새 시트: %1&gt;</translation>
+    </message>
 </context>
 <context>
     <name>pf::PaperLookMenu</name>

@@ -721,9 +721,13 @@ void MainWindow::retranslate() {
 }
 
 void MainWindow::nameHistoryStart() {
-    undoView_->setEmptyLabel(openedFrom_.isEmpty()
-                                 ? tr("<new sheet>")
-                                 : QStringLiteral("<%1>").arg(QFileInfo(openedFrom_).fileName()));
+    // A new sheet by the scene it was made from, as the New menu names it (its text
+    // without the shortcut's ampersand).
+    const auto* made = findChild<QAction*>(QStringLiteral("new.") + scene_);
+    if (!openedFrom_.isEmpty())
+        undoView_->setEmptyLabel(QStringLiteral("<%1>").arg(QFileInfo(openedFrom_).fileName()));
+    else
+        undoView_->setEmptyLabel(made ? tr("<new: %1>").arg(made->iconText()) : tr("<new sheet>"));
 }
 
 void MainWindow::changeEvent(QEvent* event) {
