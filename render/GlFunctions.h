@@ -45,6 +45,7 @@ using GlProcResolver = std::function<void*(const char* name)>;
     X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                             \
     X(PFNGLDRAWELEMENTSPROC, DrawElements)                                                         \
     X(PFNGLENABLEPROC, Enable)                                                                     \
+    X(PFNGLCULLFACEPROC, CullFace)                                                                 \
     X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray)                                   \
     X(PFNGLFINISHPROC, Finish)                                                                     \
     X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)                                   \

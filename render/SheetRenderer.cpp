@@ -143,7 +143,9 @@ void SheetRenderer::makeSphere() {
     const GlFunctions& gl = *gl_;
     std::vector<float> v;
     std::vector<std::uint32_t> idx;
-    const int rings = 16, segments = 32;
+    // Fine enough that its outline is round at the editor's size (32 segments showed
+    // their corners).
+    const int rings = 32, segments = 64;
     for (int r = 0; r <= rings; ++r)
         for (int s = 0; s <= segments; ++s) {
             const double th = std::numbers::pi * r / rings,
@@ -455,7 +457,16 @@ void SheetRenderer::render(const SheetSnapshot& snap, const OrbitCamera& camera,
         gl.Uniform1f(gl.GetUniformLocation(surfaceProgram_, "uAlpha"), 0.45f);
         gl.Uniform1f(gl.GetUniformLocation(surfaceProgram_, "uFacet"), 0.0f);
         gl.BindVertexArray(sphereVao_);
-        gl.DrawElements(GL_TRIANGLES, sphereIndexCount_, GL_UNSIGNED_INT, nullptr);
+        // The far half first, then the near half over it, so that each pixel blends the
+        // two in the same order: blended as listed, a back face drawn after the front one
+        // shaded its pixels differently, in bands across the sphere.
+        // (makeSphere winds its triangles counter-clockwise seen from outside: GL's front.)
+        gl.Enable(GL_CULL_FACE);
+        for (const GLenum culled : {GL_FRONT, GL_BACK}) {
+            gl.CullFace(culled);
+            gl.DrawElements(GL_TRIANGLES, sphereIndexCount_, GL_UNSIGNED_INT, nullptr);
+        }
+        gl.Disable(GL_CULL_FACE);
         gl.DepthMask(GL_TRUE);
         gl.Disable(GL_BLEND);
     }

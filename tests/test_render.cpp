@@ -284,6 +284,59 @@ class TestRender : public QObject {
         QVERIFY(compareImages(drawn, simulated).differingFraction > 0.002);
     }
 
+    // The translucent tool is shaded smoothly from any angle. Its triangles were blended
+    // in the order they are listed, front and back faces alike: where a back face came
+    // after the front one over a pixel, that pixel took another shade, in bands across
+    // the sphere (a helper saw them at low angles), and its 32 segments notched the
+    // outline. Seen low over the desk against the sky (the desk has faded out behind it),
+    // the middle column of the sphere darkens or brightens by a few grey levels a row,
+    // never by a band's step (20 levels before).
+    void theToolIsShadedWithoutBands() {
+        test::RenderCase c = test::renderCases()[0];
+        c.steps = 0;
+        SheetSnapshot snap = test::snapshotFor(c);
+        snap.sphere.active = false;
+        snap.sphere.hovering = true;
+        snap.sphere.radius = 0.04;
+        snap.sphere.center = Vec3(0.0, 0.12, 0.0);
+        OrbitCamera camera;
+        camera.target = snap.sphere.center;
+        camera.yaw = 30.0;
+        camera.pitch = 2.0;
+        camera.distance = 0.3;
+        RenderOptions options = test::optionsFor(c);
+        options.legend = false;
+        const QImage image = renderer->render(snap, camera, options);
+        // The sphere's pixels: bluer than the grey sky and desk.
+        const auto tool = [&](int x, int y) {
+            const QColor p = image.pixelColor(x, y);
+            return p.blue() > p.red() + 25;
+        };
+        int top = kHeight, bottom = -1;
+        const int column = kWidth / 2;
+        for (int y = 0; y < kHeight; ++y)
+            if (tool(column, y)) {
+                top = std::min(top, y);
+                bottom = std::max(bottom, y);
+            }
+        QVERIFY2(bottom - top > kHeight / 4, qPrintable(QString::number(bottom - top)));
+        int steepest = 0, at = 0;
+        for (int y = top + 3; y < bottom - 3; ++y) {
+            const int step =
+                std::abs(qGray(image.pixel(column, y + 1)) - qGray(image.pixel(column, y)));
+            if (step > steepest) {
+                steepest = step;
+                at = y;
+            }
+        }
+        QVERIFY2(steepest <= 5,
+                 qPrintable(QStringLiteral("a step of %1 grey levels at row %2 of %3-%4")
+                                .arg(steepest)
+                                .arg(at)
+                                .arg(top)
+                                .arg(bottom)));
+    }
+
     void thePaperIsInThePicture() {
         // From the top, the flat sheet of a fresh press scene covers the middle of the
         // image in paper white, brighter than the desk around it.
