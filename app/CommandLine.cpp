@@ -14,7 +14,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <sys/stat.h>
+#include <utility>
 
 namespace pf::cli {
 
@@ -131,6 +133,24 @@ std::optional<std::uint64_t> seedOption(const QCommandLineParser& parser, const 
 void requireWritable(const QString& option, const QString& path, const QStringList& inputs) {
     const QString problem = checkOutputPath(path, inputs);
     if (!problem.isEmpty()) throw UsageError{QStringLiteral("--%1: %2").arg(option, problem)};
+}
+
+void requireDistinctFrames(const QString& option, const OutputPattern& pattern,
+                           std::int64_t count) {
+    std::map<std::pair<dev_t, ino_t>, std::int64_t> frameOf;
+    for (std::int64_t f = 0; f < count; ++f) {
+        struct stat st {};
+        if (stat(QFile::encodeName(pattern.path(f)).constData(), &st) != 0) continue; // new
+        const auto [at, added] = frameOf.try_emplace({st.st_dev, st.st_ino}, f);
+        if (!added)
+            throw UsageError{QStringLiteral("--%1: frames %2 and %3 ('%4' and '%5') are the same "
+                                            "file (a link): the later would overwrite the "
+                                            "earlier. Remove the link or choose another name")
+                                 .arg(option)
+                                 .arg(at->second)
+                                 .arg(f)
+                                 .arg(pattern.path(at->second), pattern.path(f))};
+    }
 }
 
 QDir requireFolder(const QString& option, const QString& path) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "OutputPattern.h"
+
 #include <QCommandLineParser>
 #include <QDir>
 #include <QString>
@@ -57,6 +59,11 @@ int threadsOption(const QCommandLineParser& parser);
 // a regular file or a new name in a writable folder, none of `inputs`). Commands call it
 // before long work starts.
 void requireWritable(const QString& option, const QString& path, const QStringList& inputs = {});
+
+// Throws UsageError, naming the option, if two of the first `count` frames of `pattern`
+// are one file already (a link to another frame, or a hard link): writing the later
+// frame would overwrite the earlier one, which then would be lost.
+void requireDistinctFrames(const QString& option, const OutputPattern& pattern, std::int64_t count);
 
 // The folder `path`, made if it does not exist; throws UsageError naming `option` and
 // why it cannot be (a file of that name is there, or what stopped the making of it).

@@ -83,6 +83,7 @@ int runRender(const QStringList& arguments) {
     const int count = sequence ? frames : 1;
     for (int f = 0; f < count; ++f)
         requireWritable(QStringLiteral("output"), pattern->path(f), inputs);
+    requireDistinctFrames(QStringLiteral("output"), *pattern, count);
     requirePngName(QStringLiteral("output"), pattern->path(0));
     const QString diffPath = QFileInfo(pattern->path(0)).path() + QLatin1Char('/') +
                              QFileInfo(pattern->path(0)).completeBaseName() +

@@ -109,6 +109,7 @@ int runReplay(const QStringList& arguments) {
                                      .arg(save)
                                      .arg(f)};
         }
+        requireDistinctFrames(QStringLiteral("render"), *frames, frameCount);
         requirePngName(QStringLiteral("render"), frames->path(0));
         QString error;
         renderer = OffscreenRenderer::create(picture.width, picture.height, &error);

@@ -20,6 +20,7 @@
 #include <QThread>
 #include <csignal>
 #include <sys/resource.h>
+#include <unistd.h>
 
 namespace {
 
@@ -657,6 +658,54 @@ class TestSimulateCli : public QObject {
         QVERIFY(QString::fromUtf8(r.err).contains(QStringLiteral("frame 5/5")));
         QVERIFY(QImage(dir.filePath(QStringLiteral("frame_0000.png"))) !=
                 QImage(dir.filePath(QStringLiteral("frame_0004.png"))));
+    }
+
+    // Frames of a sequence that are one file (s_3.png a link to s_1.png, made by hand or
+    // by an earlier run's tidying) overwrote each other: the sequence ended with frame 3
+    // in both names and frame 1 lost. Refused before any work, for render and replay, and
+    // nothing is written.
+    void framesThatAreOneFileAreRefused() {
+        QTemporaryDir dir;
+        QFile kept(dir.filePath(QStringLiteral("s_1.png")));
+        QVERIFY(kept.open(QIODevice::WriteOnly));
+        kept.write("an earlier frame the user keeps");
+        kept.close();
+        QVERIFY(QFile::link(QStringLiteral("s_1.png"), dir.filePath(QStringLiteral("s_3.png"))));
+        const Result r =
+            runPaperfold({"render", "--scene", "press", "--size", "64x48", "--frames", "5",
+                          "--every", "1", "--output", dir.filePath(QStringLiteral("s_%d.png"))},
+                         true);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("--output: frames 1 and 3 ('" +
+                                dir.filePath(QStringLiteral("s_1.png")).toUtf8() + "' and '" +
+                                dir.filePath(QStringLiteral("s_3.png")).toUtf8() +
+                                "') are the same file"),
+                 r.err.constData());
+        QCOMPARE(QDir(dir.path()).entryList({QStringLiteral("s_*")}, QDir::Files | QDir::System),
+                 QStringList({"s_1.png", "s_3.png"}));
+        QVERIFY(kept.open(QIODevice::ReadOnly));
+        QCOMPARE(kept.readAll(), QByteArray("an earlier frame the user keeps"));
+        kept.close();
+        // A hard link is one file too; replay's frames are checked the same way.
+        QVERIFY(QFile::remove(dir.filePath(QStringLiteral("s_3.png"))));
+        QCOMPARE(::link(QFile::encodeName(dir.filePath(QStringLiteral("s_1.png"))).constData(),
+                        QFile::encodeName(dir.filePath(QStringLiteral("s_2.png"))).constData()),
+                 0);
+        pf::EditSession session(pf::test::machineryScene("press"));
+        QCOMPARE(session.advance(8), pf::StepStatus::Ok);
+        const QString rec = dir.filePath(QStringLiteral("session.paperrec"));
+        QString error;
+        QVERIFY2(pf::saveRecording(session.log(), rec, &error), qPrintable(error));
+        const Result replayed =
+            runPaperfold({"replay", rec, "--render", dir.filePath(QStringLiteral("s_%d.png")),
+                          "--every", "2", "--size", "64x48"},
+                         true);
+        QCOMPARE(replayed.exitCode, 1);
+        QVERIFY2(replayed.err.contains("--render: frames 1 and 2"), replayed.err.constData());
+        QCOMPARE(QDir(dir.path()).entryList({QStringLiteral("s_*")}, QDir::Files),
+                 QStringList({"s_1.png", "s_2.png"}));
+        QVERIFY(kept.open(QIODevice::ReadOnly));
+        QCOMPARE(kept.readAll(), QByteArray("an earlier frame the user keeps"));
     }
 
     void renderComparesWithAReference() {
