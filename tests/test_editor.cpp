@@ -2621,6 +2621,32 @@ class TestEditor : public QObject {
         QTRY_VERIFY(!window->statusBar()->currentMessage().startsWith(folding));
     }
 
+    // While the flap is carried the other tools wait (the fold is the one edit under way),
+    // and a press with them did nothing, silently: a user who switched to Grab mid-fold
+    // and pulled at the paper was told nothing.
+    void aPressWithAnotherToolWhileAFoldIsCarriedSaysItWaits() {
+        inJacobiWhenSanitized();
+        window->action("tool.fold")->trigger();
+        window->action("play")->setChecked(true);
+        QVERIFY(foldAcrossTheMiddle(*window));
+        window->action("play")->setChecked(false); // held mid-fold
+        window->simulation()->sync();
+        const int steps = window->undoStack()->count();
+        const QPoint onPaper = pixelNear(*window, Vec3(0.0, 0.0, 0.08));
+        QVERIFY(!onPaper.isNull());
+        for (const char* tool : {"tool.push", "tool.grab", "tool.pin"}) {
+            window->statusBar()->clearMessage();
+            window->action(tool)->trigger();
+            moveMouse(window->viewport(), onPaper);
+            QTest::mousePress(window->viewport(), Qt::LeftButton, {}, onPaper);
+            QTest::mouseRelease(window->viewport(), Qt::LeftButton, {}, onPaper);
+            QCOMPARE(window->statusBar()->currentMessage(),
+                     QStringLiteral("Not now: a fold is under way."));
+        }
+        window->simulation()->sync();
+        QCOMPARE(window->undoStack()->count(), steps); // none of them made a step
+    }
+
     // A fold whose crease does not hold its flap says so a second after the let-go: the
     // status bar said "the crease keeps it" at every let-go, also for a third fold
     // along the diagonal of a sheet folded twice, which sprang back 99°.

@@ -266,6 +266,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         QSettings().setValue(QLatin1String(kHintSetting), true);
     });
     connect(input_, &ViewportInput::strokeBegan, this, [this] {
+        // The carried flap is the one edit under way: a push, grab or pin waits for it
+        // (EditSession::busy), and said nothing. A second fold line says so when refused.
+        if (foldUnderWay_ && input_->tool() != ViewportInput::Tool::Fold) {
+            statusBar()->showMessage(tr("Not now: a fold is under way."), 5000);
+            return;
+        }
         if (playing_) return;
         switch (input_->tool()) {
         case ViewportInput::Tool::Push:
