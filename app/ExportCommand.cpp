@@ -59,7 +59,8 @@ int runExport(const QStringList& arguments) {
                                 << "; nothing was exported\n";
             return 3;
         }
-    const SurfaceMesh mesh = subdivideSheet(sim.world().sheet, sim.world().params.sigma, level);
+    SurfaceMesh mesh = subdivideSheet(sim.world().sheet, sim.world().params.sigma, level);
+    if (sim.world().groundEnabled) liftOntoTheDesk(mesh, sim.world().groundHeight);
     QString error;
     if (!writeSurface(mesh, output, format, !parser.isSet(QStringLiteral("no-normals")),
                       surfaceLook(look), &error, inputs)) {

@@ -25,14 +25,13 @@ SurfaceKey surfaceKeyOf(const SheetSnapshot& snapshot, const RenderOptions& opti
 void buildDrawnSurface(const SheetSnapshot& snap, const RenderOptions& options, DrawnSurface& out) {
     out.key = surfaceKeyOf(snap, options);
     const bool strain = out.key.strain;
-    const SurfaceMesh mesh = subdivide(snap.x, snap.tris, strain ? &snap.vertexStrain : nullptr,
-                                       &snap.X, options.sigma, options.subdivision);
+    SurfaceMesh mesh = subdivide(snap.x, snap.tris, strain ? &snap.vertexStrain : nullptr, &snap.X,
+                                 options.sigma, options.subdivision);
+    if (snap.groundEnabled) liftOntoTheDesk(mesh, snap.groundHeight);
     out.hasUvs = !mesh.uvs.empty();
     clearFor(out.vertices, mesh.positions.size() * DrawnSurface::kFloatsPerVertex);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        Vec3 p = mesh.positions[i];
-        // A Hermite midpoint can dip below paper lying on the desk; paper cannot.
-        if (snap.groundEnabled) p.y() = std::max(p.y(), snap.groundHeight);
+        const Vec3& p = mesh.positions[i];
         const Vec3& n = mesh.normals[i];
         out.vertices.insert(out.vertices.end(), {float(p.x()), float(p.y()), float(p.z()),
                                                  float(n.x()), float(n.y()), float(n.z())});

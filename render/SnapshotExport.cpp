@@ -16,8 +16,9 @@ bool exportSnapshotImage(const SheetSnapshot& snap, const OrbitCamera& camera,
 
 bool exportSnapshotMesh(const SheetSnapshot& snap, const RenderOptions& options,
                         const QString& path, MeshFormat format, QString* error) {
-    const SurfaceMesh mesh =
+    SurfaceMesh mesh =
         subdivide(snap.x, snap.tris, nullptr, &snap.X, options.sigma, options.subdivision);
+    if (snap.groundEnabled) liftOntoTheDesk(mesh, snap.groundHeight);
     return writeSurface(mesh, path, format, true, surfaceLook(options.look), error);
 }
 

@@ -25,6 +25,10 @@ SurfaceMesh subdivideSheet(const Sheet& sheet, double sigma, int levels) {
     return subdivide(sheet.verts.x, sheet.tris, nullptr, &sheet.verts.X, sigma, levels);
 }
 
+void liftOntoTheDesk(SurfaceMesh& mesh, double groundHeight) {
+    for (Vec3& p : mesh.positions) p.y() = std::max(p.y(), groundHeight);
+}
+
 std::vector<Vec2> materialUvs(const std::vector<Vec2>& material) {
     if (material.empty()) return {};
     Vec2 lo = material.front(), hi = lo;

@@ -11,6 +11,7 @@
 #include "SheetFile.h"
 #include "SheetStats.h"
 #include "Simulation.h"
+#include "TestData.h"
 #include "TestSheets.h"
 #include "XpbdIntegrator.h"
 
@@ -90,21 +91,6 @@ PushResult push(bool holdFarEdge) {
     moved.y() = 0.0;
     r.centreMove = moved.norm();
     return r;
-}
-
-// A saved state packed in tests/data (tests/data/README.md), loaded as the editor would.
-std::optional<World> packedState(const char* name) {
-    QFile packed(QStringLiteral(PAPERFOLD_TEST_DATA "/") + QLatin1String(name));
-    if (!packed.open(QIODevice::ReadOnly)) return std::nullopt;
-    QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("state.paper"));
-    QFile sheet(path);
-    if (!dir.isValid() || !sheet.open(QIODevice::WriteOnly)) return std::nullopt;
-    sheet.write(qUncompress(packed.readAll()));
-    sheet.close();
-    WorldLoad load = loadWorld(path);
-    if (!load.world) qWarning("%s: %s", name, qPrintable(load.error));
-    return load.world;
 }
 
 } // namespace
@@ -242,7 +228,7 @@ class TestPaperBehaviour : public QObject {
     // (kStubbornSweeps). (The state this test stepped from before, saved at 29.05 s, no
     // longer wanders once the plate's sum stencils yield as the others do.)
     void aStepWhereNewtonWandersStillEndsWithinTheBound() {
-        std::optional<World> state = packedState("tissue-newton-stall.paper.qz");
+        std::optional<World> state = test::packedState("tissue-newton-stall.paper.qz");
         QVERIFY(state);
         QCOMPARE(state->params.integrator, std::string("xpbd"));
         Simulation sim(std::move(*state));
@@ -273,7 +259,7 @@ class TestPaperBehaviour : public QObject {
     // its 16 iterations it went on while the state it was in was over 1 %, all 48, and
     // then went back to the sixth's. It ends at its best once that is within the bound.
     void aProjectionThatSwingsEndsAtItsBestOnceItsIterationsAreDone() {
-        std::optional<World> state = packedState("pinned-push-newton-swing.paper.qz");
+        std::optional<World> state = test::packedState("pinned-push-newton-swing.paper.qz");
         QVERIFY(state);
         QCOMPARE(state->params.integrator, std::string("xpbd"));
         QVERIFY(state->sphere.active);
@@ -299,7 +285,7 @@ class TestPaperBehaviour : public QObject {
     // position, the cycle goes nowhere and the sheet sleeps.
     void aSheetWhoseCreasesCycleInPlaceFallsAsleep() {
         if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
-        std::optional<World> state = packedState("folded-twice-cycle.paper.qz");
+        std::optional<World> state = test::packedState("folded-twice-cycle.paper.qz");
         QVERIFY(state);
         Simulation sim(std::move(*state));
         const std::vector<Vec3> start = sim.world().sheet.verts.x;
@@ -336,7 +322,7 @@ class TestPaperBehaviour : public QObject {
     // sleeps.
     void aPinnedCardThatSwingsInPlaceFallsAsleep() {
         if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
-        std::optional<World> state = packedState("pinned-card-swing.paper.qz");
+        std::optional<World> state = test::packedState("pinned-card-swing.paper.qz");
         QVERIFY(state);
         QCOMPARE(QString::fromStdString(state->params.material.name), QStringLiteral("card"));
         Simulation sim(std::move(*state));
@@ -370,7 +356,7 @@ class TestPaperBehaviour : public QObject {
     // now stops short where the paper is taut, as paper stops a hand.
     void aToolPressedIntoTautPaperStopsShort() {
         if (PAPERFOLD_TEST_SLOWDOWN > 1) QSKIP("physics only; run in the Release build");
-        std::optional<World> state = packedState("pinned-tube-pressed.paper.qz");
+        std::optional<World> state = test::packedState("pinned-tube-pressed.paper.qz");
         QVERIFY(state);
         EditSession session(std::move(*state));
         const auto* xpbd = dynamic_cast<const XpbdIntegrator*>(&session.simulation().integrator());
