@@ -735,10 +735,6 @@
         <translation>ψ bestimmt, wie weit ein neuer Knoten aus der Fläche tritt, wenn eine Feder bricht (Gl. 11). Bei 1 behalten die beiden Hälften die Ruhelänge und brechen nicht sofort wieder; kleineres ψ lässt sie gestaucht, sodass sich Brüche zu feineren Knittern wiederholen.</translation>
     </message>
     <message>
-        <source>σ crumple sharpness</source>
-        <translation>σ Knitterschärfe</translation>
-    </message>
-    <message>
         <source>σ shapes the subdivided surface that is drawn (§4.3): 0 keeps flat facets and sharp creases, larger values round them off. It does not change the simulation.</source>
         <translation>σ formt die unterteilte Fläche, die gezeichnet wird (§4.3): 0 lässt ebene Facetten und scharfe Knicke, größere Werte runden sie ab. Die Simulation ändert sich dadurch nicht.</translation>
     </message>
@@ -805,6 +801,10 @@
     <message>
         <source>The Fold tool (L): draw a line across the paper; the lighter side (or the side without pins) is carried round it, pressed flat, opened to this angle and let go. A valley fold turns the flap up toward you, a mountain fold away from you, under the paper.</source>
         <translation>Das Werkzeug Falten (L): eine Linie über das Papier ziehen; die leichtere Seite (oder die ohne angeheftete Stellen) wird um sie herumgeführt, flach gepresst, auf diesen Winkel geöffnet und losgelassen. Eine Talfalte klappt die Lasche zu Ihnen hin nach oben, eine Bergfalte von Ihnen weg unter das Papier.</translation>
+    </message>
+    <message>
+        <source>σ crumple smoothing</source>
+        <translation>σ Knitterglättung</translation>
     </message>
 </context>
 <context>

@@ -730,10 +730,6 @@
         <translation>ψ はばねが破断したとき新しい頂点が面から出る距離を決めます（式11）。1 では2つの半分が自然長を保ち、すぐには再び破断しません。ψ が小さいと半分が圧縮されたまま残り、破断が繰り返されてより細かいしわになります。</translation>
     </message>
     <message>
-        <source>σ crumple sharpness</source>
-        <translation>σ しわの鋭さ</translation>
-    </message>
-    <message>
         <source>σ shapes the subdivided surface that is drawn (§4.3): 0 keeps flat facets and sharp creases, larger values round them off. It does not change the simulation.</source>
         <translation>σ は描画される細分割面の形を決めます（§4.3）。0 では平らな面と鋭い折り目のまま、値を大きくすると丸みを帯びます。シミュレーションは変わりません。</translation>
     </message>
@@ -800,6 +796,10 @@
     <message>
         <source>The Fold tool (L): draw a line across the paper; the lighter side (or the side without pins) is carried round it, pressed flat, opened to this angle and let go. A valley fold turns the flap up toward you, a mountain fold away from you, under the paper.</source>
         <translation>折るツール（L）：紙を横切る線を引きます。軽い側（またはピンのない側）が線のまわりに運ばれ、平らに押さえられ、この角度まで開かれてから放されます。谷折りは折り返しを手前（上）へ、山折りは奥（紙の下）へ折ります。</translation>
+    </message>
+    <message>
+        <source>σ crumple smoothing</source>
+        <translation>σ しわの滑らかさ</translation>
     </message>
 </context>
 <context>

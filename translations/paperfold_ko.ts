@@ -730,10 +730,6 @@
         <translation>ψ는 스프링이 파단될 때 새 정점이 면 밖으로 얼마나 나오는지 정합니다(식 11). 1이면 두 반쪽이 정지 길이를 유지해 곧바로 다시 파단되지 않고, ψ가 작으면 압축된 채로 남아 파단이 반복되며 더 잘게 구겨집니다.</translation>
     </message>
     <message>
-        <source>σ crumple sharpness</source>
-        <translation>σ 주름 선명도</translation>
-    </message>
-    <message>
         <source>σ shapes the subdivided surface that is drawn (§4.3): 0 keeps flat facets and sharp creases, larger values round them off. It does not change the simulation.</source>
         <translation>σ는 그려지는 세분화 곡면의 모양을 정합니다(§4.3). 0이면 평평한 면과 날카로운 주름이 그대로이고, 값이 클수록 둥글게 다듬어집니다. 시뮬레이션은 바뀌지 않습니다.</translation>
     </message>
@@ -800,6 +796,10 @@
     <message>
         <source>The Fold tool (L): draw a line across the paper; the lighter side (or the side without pins) is carried round it, pressed flat, opened to this angle and let go. A valley fold turns the flap up toward you, a mountain fold away from you, under the paper.</source>
         <translation>접기 도구 (L): 종이를 가로지르는 선을 그립니다. 가벼운 쪽(또는 고정점이 없는 쪽)이 선을 따라 넘겨지고, 평평하게 눌린 뒤, 이 각도까지 펼쳐지고 놓입니다. 골접기는 접히는 부분을 내 쪽(위)으로, 산접기는 반대쪽(종이 아래)으로 접습니다.</translation>
+    </message>
+    <message>
+        <source>σ crumple smoothing</source>
+        <translation>σ 주름 부드러움</translation>
     </message>
 </context>
 <context>

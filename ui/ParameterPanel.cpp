@@ -256,7 +256,7 @@ void ParameterPanel::retranslate() {
                               "breaks (Eq. 11). At 1 the two halves keep the rest length and do "
                               "not break again at once; smaller ψ leaves them compressed, so "
                               "breaks repeat into finer crumples."));
-    sigma_.label->setText(tr("σ crumple sharpness"));
+    sigma_.label->setText(tr("σ crumple smoothing"));
     sigma_.label->setToolTip(tr("σ shapes the subdivided surface that is drawn (§4.3): 0 keeps "
                                 "flat facets and sharp creases, larger values round them off. It "
                                 "does not change the simulation."));
