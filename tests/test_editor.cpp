@@ -1,5 +1,6 @@
 // The editor driven like a user: QTest mouse and actions on a real MainWindow
 // (under xvfb-run), checked against what the simulation thread reports.
+#include "ActionTexts.h"
 #include "ChartBrowser.h"
 #include "EditorDialogs.h"
 #include "FoldAngle.h"
@@ -38,6 +39,7 @@
 #include <QMouseEvent>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScopeGuard>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -1124,6 +1126,33 @@ class TestEditor : public QObject {
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("ファイル(&F)"));
         QVERIFY(installLanguage(QStringLiteral("en")));
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("&File"));
+    }
+
+    // Japanese and Korean write a menu entry's key after its words, "折る(&F)": the tool
+    // button showed "折る(F)", though the Fold key is L (F fits the view), and the History
+    // named a new sheet "<新しいシート: 押す（シート上の球）(P)>". Beside no menu, no key.
+    void aMenuKeyShowsOnlyInTheMenus() {
+        auto* history = window->findChild<QUndoView*>();
+        QVERIFY(history);
+        for (const char* language : {"ja", "ko"}) {
+            QVERIFY(installLanguage(QLatin1String(language)));
+            QTRY_VERIFY(window->action("tool.fold")->text().contains(QLatin1String("(&")));
+            for (const char* name : {"tool.push", "tool.grab", "tool.pin", "tool.fold", "open"}) {
+                const QAction* a = window->action(name);
+                QVERIFY2(
+                    !a->iconText().contains(QLatin1Char('&')) &&
+                        !a->iconText().contains(QRegularExpression(QStringLiteral("\\(\\w\\)"))),
+                    qPrintable(a->iconText()));
+                QVERIFY2(a->text().startsWith(a->iconText().left(1)), qPrintable(a->iconText()));
+            }
+            window->newScene(QStringLiteral("press"));
+            QVERIFY2(!history->emptyLabel().contains(QStringLiteral("(P)")),
+                     qPrintable(history->emptyLabel()));
+        }
+        QVERIFY(installLanguage(QStringLiteral("en")));
+        QTRY_COMPARE(window->action("tool.fold")->iconText(), QStringLiteral("Fold"));
+        QCOMPARE(ActionTexts::withoutMnemonic(QStringLiteral("Save && &Quit")),
+                 QStringLiteral("Save & Quit"));
     }
 
     // The menus name a shortcut's keys in the language: a German user read "Ctrl+O" and

@@ -1,8 +1,20 @@
 #include "ActionTexts.h"
 
 #include <QAction>
+#include <QRegularExpression>
 
 namespace pf {
+
+QString ActionTexts::withoutMnemonic(const QString& text) {
+    static const QRegularExpression keyAfter(QStringLiteral("\\s*[(（]&[^&][)）]"));
+    QString words = text;
+    words.remove(keyAfter);
+    // "&&" is a '&' shown; a lone '&' marks the key.
+    words.replace(QStringLiteral("&&"), QStringLiteral("\x01"));
+    words.remove(QLatin1Char('&'));
+    words.replace(QLatin1Char('\x01'), QLatin1Char('&'));
+    return words;
+}
 
 void ActionTexts::apply(const QObject* window) {
     auto action = [window](const char* name) {
@@ -11,7 +23,8 @@ void ActionTexts::apply(const QObject* window) {
     auto set = [&](const char* name, const QString& text, const QString& tip = QString()) {
         QAction* a = action(name);
         a->setText(text);
-        a->setToolTip(tip.isEmpty() ? QString(text).remove(QLatin1Char('&')) : tip);
+        a->setIconText(withoutMnemonic(text));
+        a->setToolTip(tip.isEmpty() ? withoutMnemonic(text) : tip);
     };
     set("new.press", tr("&Press (sphere on a sheet)"));
     set("new.drape", tr("&Drape (hanging sheet)"));

@@ -18,6 +18,10 @@ class ActionTexts {
     static QString literal(QString text) {
         return text.replace(QLatin1Char('&'), QStringLiteral("&&"));
     }
+    // A menu entry's `text` as words beside no menu (a tool button, a tip, the History):
+    // without its shortcut mark, also where a language writes the key after the words
+    // ("折る(&F)" read "折る(F)" on the Fold button, whose key is L).
+    static QString withoutMnemonic(const QString& text);
 };
 
 } // namespace pf
