@@ -22,6 +22,7 @@
 #include "Viewport.h"
 #include "ViewportInput.h"
 #include "WorkerPool.h"
+#include "WrappedToolTips.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -32,6 +33,7 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QGroupBox>
+#include <QHelpEvent>
 #include <QInputDialog>
 #include <QLabel>
 #include <QMenu>
@@ -41,6 +43,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QScopeGuard>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
@@ -52,6 +55,7 @@
 #include <QTest>
 #include <QTimer>
 #include <QToolButton>
+#include <QToolTip>
 #include <QUndoStack>
 #include <QUndoView>
 #include <algorithm>
@@ -1126,6 +1130,36 @@ class TestEditor : public QObject {
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("ファイル(&F)"));
         QVERIFY(installLanguage(QStringLiteral("en")));
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("&File"));
+    }
+
+    // A long tooltip wraps: φ's explanation was one line 1,450 px wide on a 1,600 px
+    // screen, past the edge of the 1,280 px window. (Qt wraps a tip wider than the screen
+    // itself, so the one shown here is a tip that fits on the screen on one line.)
+    void aLongToolTipWrapsWithinTheWindow() {
+        const QFontMetrics metrics(QToolTip::font());
+        const int screen = window->screen()->geometry().width();
+        QWidget* shown = nullptr;
+        for (QWidget* w : window->findChildren<QWidget*>()) {
+            const QString tip = w->toolTip();
+            const int line = metrics.horizontalAdvance(tip);
+            if (w->isVisible() && !Qt::mightBeRichText(tip) && line > 700 && line < screen - 50)
+                shown = w;
+        }
+        QVERIFY(shown);
+        QVERIFY(shown->toolTip().size() > WrappedToolTips::kWrapFrom);
+        const QPoint at = shown->rect().center();
+        QHelpEvent help(QEvent::ToolTip, at, shown->mapToGlobal(at));
+        QApplication::sendEvent(shown, &help);
+        QTRY_VERIFY(QToolTip::isVisible());
+        QWidget* tip = nullptr;
+        for (QWidget* w : QApplication::topLevelWidgets())
+            if (w->objectName() == QLatin1String("qtooltip_label") && w->isVisible()) tip = w;
+        QVERIFY(tip);
+        qInfo("\"%s\": %d px on one line, shown %d x %d px", qPrintable(shown->toolTip().left(30)),
+              metrics.horizontalAdvance(shown->toolTip()), tip->width(), tip->height());
+        QVERIFY2(tip->width() <= 600, qPrintable(QString::number(tip->width())));
+        QVERIFY(tip->height() > 2 * metrics.height()); // several lines
+        QToolTip::hideText();
     }
 
     // Japanese and Korean write a menu entry's key after its words, "折る(&F)": the tool

@@ -25,6 +25,7 @@
 #include "Viewport.h"
 #include "ViewportInput.h"
 #include "WorkerPool.h"
+#include "WrappedToolTips.h"
 #include "XpbdIntegrator.h"
 
 #include <QAbstractSpinBox>
@@ -89,6 +90,7 @@ int MainWindow::defaultThreads() {
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName(QStringLiteral("MainWindow"));
     keepFreedHeapForTheNextFrame();
+    qApp->installEventFilter(new WrappedToolTips(this));
     const World first = sceneWorld(scene_);
     sim_ = std::make_unique<SimulationThread>(first);
 
