@@ -304,12 +304,12 @@
 <context>
     <name>pf::ChartBrowser</name>
     <message>
-        <source>Folder written by &apos;paperfold bench&apos;</source>
-        <translation>Von „paperfold bench“ geschriebener Ordner</translation>
-    </message>
-    <message>
         <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
         <translation>Kein bench_*.png in %1. Ausführen: paperfold bench --output-dir %1</translation>
+    </message>
+    <message>
+        <source>No chart in %1 yet: choose the folder &apos;paperfold bench --output-dir&apos; wrote</source>
+        <translation>Noch kein Diagramm in %1: Ordner wählen, den &apos;paperfold bench --output-dir&apos; geschrieben hat</translation>
     </message>
 </context>
 <context>

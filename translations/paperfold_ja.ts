@@ -299,12 +299,12 @@
 <context>
     <name>pf::ChartBrowser</name>
     <message>
-        <source>Folder written by &apos;paperfold bench&apos;</source>
-        <translation>「paperfold bench」が書き出したフォルダー</translation>
-    </message>
-    <message>
         <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
         <translation>%1 に bench_*.png がありません。次を実行してください：paperfold bench --output-dir %1</translation>
+    </message>
+    <message>
+        <source>No chart in %1 yet: choose the folder &apos;paperfold bench --output-dir&apos; wrote</source>
+        <translation>%1 にはまだグラフがありません：&apos;paperfold bench --output-dir&apos; が書き出したフォルダーを選んでください</translation>
     </message>
 </context>
 <context>

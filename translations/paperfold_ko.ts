@@ -299,12 +299,12 @@
 <context>
     <name>pf::ChartBrowser</name>
     <message>
-        <source>Folder written by &apos;paperfold bench&apos;</source>
-        <translation>&apos;paperfold bench&apos;가 쓴 폴더</translation>
-    </message>
-    <message>
         <source>No bench_*.png in %1. Run: paperfold bench --output-dir %1</source>
         <translation>%1에 bench_*.png가 없습니다. 실행: paperfold bench --output-dir %1</translation>
+    </message>
+    <message>
+        <source>No chart in %1 yet: choose the folder &apos;paperfold bench --output-dir&apos; wrote</source>
+        <translation>%1에 아직 차트가 없습니다: &apos;paperfold bench --output-dir&apos;가 쓴 폴더를 고르세요</translation>
     </message>
 </context>
 <context>

@@ -27,8 +27,12 @@ ChartBrowser::ChartBrowser(QWidget* parent)
 void ChartBrowser::showLatest() {
     QFileInfoList charts = chartsIn(folder_);
     if (charts.isEmpty()) {
+        // The picker's title is all a user sees: it says why it opened.
         const QString picked = QFileDialog::getExistingDirectory(
-            parent_, tr("Folder written by 'paperfold bench'"), folder_);
+            parent_,
+            tr("No chart in %1 yet: choose the folder 'paperfold bench --output-dir' wrote")
+                .arg(QDir::toNativeSeparators(folder_)),
+            folder_);
         if (picked.isEmpty()) return;
         folder_ = picked;
         QSettings().setValue(kSettingsKey, picked);
