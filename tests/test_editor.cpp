@@ -954,6 +954,38 @@ class TestEditor : public QObject {
         window->simulation()->setPlaying(false);
     }
 
+    // The view is not drawn while nothing moves, and the status bar read "0 fps" beside a
+    // sheet at rest, settled or paused: to a user, an editor that had frozen. It reads
+    // "– fps" then, and frames per second again once frames are drawn.
+    void aStillSheetReadsNoFrameRateNotZero() {
+        QStatusBar bar;
+        StatusReadout readout(&bar);
+        const auto fps = [&] {
+            for (const QLabel* label : bar.findChildren<QLabel*>())
+                if (label->text().endsWith(QStringLiteral(" fps"))) return label->text();
+            return QString();
+        };
+        SimulationStatus st;
+        st.playing = true;
+        st.stepSeconds = 1e-3;
+        st.asleep = true;
+        QTest::qWait(600); // past the half second the rate is counted over
+        readout.show(st);
+        QCOMPARE(fps(), QStringLiteral("– fps"));
+        st.asleep = false; // moving, and nothing drawn: that is 0 fps
+        QTest::qWait(600);
+        readout.show(st);
+        QCOMPARE(fps(), QStringLiteral("0 fps"));
+        for (int k = 0; k < 30; ++k) {
+            QTest::qWait(20);
+            readout.frameDrawn();
+        }
+        QVERIFY2(fps().split(u' ').first().toInt() > 10, qPrintable(fps()));
+        st.playing = false; // paused with frames drawn in the last half second: counted
+        readout.show(st);
+        QVERIFY2(fps() != QStringLiteral("– fps"), qPrintable(fps()));
+    }
+
     // A name typed without a suffix gets the kind's, so that Open's "*.paper" filter
     // lists the sheet; a name with a suffix is kept as typed.
     void aNameTypedWithoutASuffixGetsTheKindsSuffix() {

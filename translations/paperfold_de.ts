@@ -976,6 +976,14 @@
         <source>%1 · settled</source>
         <translation>%1 · beruhigt</translation>
     </message>
+    <message>
+        <source>– fps</source>
+        <translation>– fps</translation>
+    </message>
+    <message>
+        <source>Nothing moves, so the view is not drawn again until something changes.</source>
+        <translation>Nichts bewegt sich, daher wird die Ansicht erst neu gezeichnet, wenn sich etwas ändert.</translation>
+    </message>
 </context>
 <context>
     <name>pf::StrokeHistory</name>

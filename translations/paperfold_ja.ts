@@ -967,6 +967,14 @@
         <source>%1 · settled</source>
         <translation>%1 · 固定</translation>
     </message>
+    <message>
+        <source>– fps</source>
+        <translation>– fps</translation>
+    </message>
+    <message>
+        <source>Nothing moves, so the view is not drawn again until something changes.</source>
+        <translation>何も動いていないため、何かが変わるまで表示は再描画されません。</translation>
+    </message>
 </context>
 <context>
     <name>pf::StrokeHistory</name>

@@ -967,6 +967,14 @@
         <source>%1 · settled</source>
         <translation>%1 · 안정됨</translation>
     </message>
+    <message>
+        <source>– fps</source>
+        <translation>– fps</translation>
+    </message>
+    <message>
+        <source>Nothing moves, so the view is not drawn again until something changes.</source>
+        <translation>움직이는 것이 없어 무언가 바뀔 때까지 화면을 다시 그리지 않습니다.</translation>
+    </message>
 </context>
 <context>
     <name>pf::StrokeHistory</name>

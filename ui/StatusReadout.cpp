@@ -51,10 +51,17 @@ void StatusReadout::updateFps() {
         fpsValue_ = 1000.0 * frames_ / clock_.restart();
         frames_ = 0;
     }
-    fps_->setText(tr("%1 fps").arg(fpsValue_, 0, 'f', 0));
+    // Nothing is drawn while nothing moves: "0 fps" beside a still sheet read as a frozen
+    // editor.
+    const bool idle = still_ && fpsValue_ == 0.0;
+    fps_->setText(idle ? tr("– fps") : tr("%1 fps").arg(fpsValue_, 0, 'f', 0));
+    fps_->setToolTip(idle ? tr("Nothing moves, so the view is not drawn again until something "
+                               "changes.")
+                          : QString());
 }
 
 void StatusReadout::show(const SimulationStatus& st) {
+    still_ = !st.playing || st.settled || st.resting();
     updateFps();
     // A user could not tell a sheet lying still from one that only looked still.
     QString step = st.stepSeconds > 0.0 ? tr("step %1 µs").arg(st.stepSeconds * 1e6, 0, 'f', 0)

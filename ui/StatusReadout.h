@@ -26,7 +26,7 @@ class StatusReadout : public QObject {
     // The simulation's numbers, once per snapshot published.
     void show(const SimulationStatus& status);
     // Called once per frame the view draws: a snapshot that draws the same picture as
-    // the one shown is not drawn again, so a resting sheet reads about 0 fps.
+    // the one shown is not drawn again, so a still sheet reads "– fps", not "0 fps".
     void frameDrawn();
 
   protected:
@@ -41,6 +41,7 @@ class StatusReadout : public QObject {
     QElapsedTimer clock_;
     int frames_ = 0;
     double fpsValue_ = 0.0;
+    bool still_ = false; // the sheet rests, is settled or paused: nothing needs drawing
 };
 
 } // namespace pf
