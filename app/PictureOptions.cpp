@@ -25,6 +25,8 @@ void addPictureOptions(QCommandLineParser& parser) {
          QStringLiteral("Overlays, comma-separated: %1.").arg(overlayNames()),
          QStringLiteral("list")},
         {QStringLiteral("no-legend"), QStringLiteral("Leave the overlay legend out.")},
+        {QStringLiteral("no-creases"),
+         QStringLiteral("Draw the paper without its creases' fine lines (the surface alone).")},
     });
     addLookOptions(parser);
 }
@@ -52,6 +54,7 @@ PictureSetup pictureFromOptions(const QCommandLineParser& parser) {
     p.options.subdivision =
         static_cast<int>(integerOption(parser, QStringLiteral("subdiv"), 0, 4).value_or(3));
     p.options.legend = !parser.isSet(QStringLiteral("no-legend"));
+    p.options.creases = !parser.isSet(QStringLiteral("no-creases"));
     p.options.look = lookFromOptions(parser, &p.lookInputs);
     if (parser.isSet(QStringLiteral("overlay"))) {
         QString error;

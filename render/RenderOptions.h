@@ -33,6 +33,11 @@ struct RenderOptions {
     bool legend = true;
     // Markers on pinned vertices (the editor's pins; a headless render leaves them out).
     bool pins = false;
+    // The model's creases (its broken edges) drawn as fine lines a shade darker than the
+    // paper, as the damaged fibres of a real crease show. Pulled flat again, crumpled
+    // paper's surface has no fold left to shade, and a sheet crumpled ten times was a
+    // clean white rectangle.
+    bool creases = true;
     // Share of the facet normal in the shading: 0 smooth, 1 faceted.
     double facet = 0.35;
     // Heat-map ranges (values at the top of the legend).

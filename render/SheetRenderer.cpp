@@ -18,6 +18,8 @@ QByteArray shaderSource(const char* name) {
 }
 
 constexpr int kLineFloats = 7; // position 3, colour 4
+// A crease's line: this share of the paper's colour, blended at 0.6.
+constexpr float kCreaseShade = 0.75f;
 
 void pushLine(std::vector<float>& out, const Vec3& a, const Vec3& b, const float* rgba) {
     for (const Vec3* p : {&a, &b}) {
@@ -254,6 +256,15 @@ void SheetRenderer::buildLines(const SheetSnapshot& snap, const RenderOptions& o
         if (b.count > 0) lineBatches_.push_back(b);
     };
     const std::size_t n = snap.springEnds.size();
+    if (options.creases)
+        batch(0.5f, [&] {
+            const float shade = kCreaseShade;
+            const auto& paper = options.look.color;
+            const float c[4] = {shade * paper[0], shade * paper[1], shade * paper[2], 0.6f};
+            for (std::size_t s = 0; s < snap.creaseHalf.size(); ++s)
+                if (snap.creaseHalf[s])
+                    pushLine(lineData_, x[snap.springEnds[s][0]], x[snap.springEnds[s][1]], c);
+        });
     if (options.overlays & OverlayWireframe)
         batch(0.6f, [&] {
             const float c[4] = {0.12f, 0.12f, 0.14f, 0.6f};
@@ -325,7 +336,8 @@ void SheetRenderer::buildLines(const SheetSnapshot& snap, const RenderOptions& o
 }
 
 void SheetRenderer::uploadLines(const SheetSnapshot& snap, const RenderOptions& options) {
-    const LinesKey key{snap.serial, options.overlays, options.pins, options.probabilityRange};
+    const LinesKey key{snap.serial,    options.overlays,   options.pins,
+                       options.creases, options.look.color, options.probabilityRange};
     if (snap.serial != 0 && key == linesKey_) return;
     linesKey_ = key;
     buildLines(snap, options);

@@ -7,6 +7,7 @@
 #include "SheetSnapshot.h"
 
 #include <QString>
+#include <array>
 #include <vector>
 
 namespace pf {
@@ -68,6 +69,8 @@ class SheetRenderer {
         std::uint64_t serial = 0;
         unsigned overlays = 0;
         bool pins = false;
+        bool creases = false;
+        std::array<float, 3> paper{};
         double probabilityRange = -1.0;
         friend bool operator==(const LinesKey&, const LinesKey&) = default;
     } linesKey_;

@@ -14,7 +14,8 @@ bool drawsTheSame(const SheetSnapshot& a, const SheetSnapshot& b) {
     return a.x == b.x && a.X == b.X && a.tris == b.tris && a.springEnds == b.springEnds &&
            a.springKind == b.springKind && a.breakable == b.breakable &&
            a.breakProbability == b.breakProbability && a.strain == b.strain &&
-           a.recentlyBroken == b.recentlyBroken && a.vertexStrain == b.vertexStrain &&
+           a.recentlyBroken == b.recentlyBroken && a.creaseHalf == b.creaseHalf &&
+           a.vertexStrain == b.vertexStrain &&
            a.pinned == b.pinned && a.held == b.held && toolDrawsTheSame(a.sphere, b.sphere) &&
            a.groundEnabled == b.groundEnabled && a.groundHeight == b.groundHeight;
 }
@@ -65,6 +66,12 @@ SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds) {
             snap.vertexStrain[b] = std::max(snap.vertexStrain[b], e);
         }
     }
+    snap.creaseHalf.assign(static_cast<std::size_t>(S.size()), 0);
+    for (const DamageEvent& ev : s.events)
+        if (ev.active && ev.kind == EventKind::Break)
+            for (const Index half : {ev.springs[0], ev.springs[1]})
+                if (half >= 0 && half < S.size() && S.kind[half] == SpringKind::Structural)
+                    snap.creaseHalf[half] = 1;
     const auto recentSteps = static_cast<std::int64_t>(std::ceil(recentSeconds / world.params.dt));
     // The log is in step order (a redo logs again at its own step), so only its tail
     // can be recent.

@@ -1164,6 +1164,26 @@ class TestEditor : public QObject {
         QTRY_COMPARE(window->menuBar()->actions().first()->text(), QStringLiteral("&File"));
     }
 
+    // View ▸ Crease Lines: on by default, off draws the surface alone, and the choice is
+    // kept for the next session like the paper's colour.
+    void creaseLinesCanBeTurnedOffAndStayAsChosen() {
+        QAction* creases = window->action("view.creases");
+        QVERIFY(creases && creases->isCheckable());
+        QVERIFY(creases->isChecked());
+        QVERIFY(window->viewport()->renderOptions().creases);
+        creases->trigger();
+        QVERIFY(!window->viewport()->renderOptions().creases);
+        QCOMPARE(QSettings().value(QLatin1String(MainWindow::kCreasesSetting)).toBool(), false);
+        {
+            MainWindow next;
+            QVERIFY(!next.action("view.creases")->isChecked());
+            QVERIFY(!next.viewport()->renderOptions().creases);
+        }
+        creases->trigger();
+        QVERIFY(window->viewport()->renderOptions().creases);
+        QCOMPARE(QSettings().value(QLatin1String(MainWindow::kCreasesSetting)).toBool(), true);
+    }
+
     // A long tooltip wraps: φ's explanation was one line 1,450 px wide on a 1,600 px
     // screen, past the edge of the 1,280 px window. (Qt wraps a tip wider than the screen
     // itself, so the one shown here is a tip that fits on the screen on one line.)
@@ -1386,7 +1406,7 @@ class TestEditor : public QObject {
         for (qsizetype i = 0; i < english.size(); ++i) {
             const QString& e = english[i];
             const bool words = e.contains(QRegularExpression(QStringLiteral("[A-Za-z]{3,}")));
-            const bool unit = e.contains(QRegularExpression(QStringLiteral("^[0-9]+ fps$")));
+            const bool unit = e.contains(QRegularExpression(QStringLiteral("^([0-9]+|–) fps$")));
             if (words && e == translated[i] && !same.contains(e) && !unit) untranslated << e;
         }
         QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join(QStringLiteral(" | "))));

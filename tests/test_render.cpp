@@ -7,10 +7,13 @@
 //
 // Regenerate on purpose with PAPERFOLD_REGENERATE_BASELINES=1: the images are
 // rewritten into tests/baselines/ and the comparison is skipped for that run.
+#include "Breaking.h"
+#include "Camera.h"
 #include "EditSession.h"
 #include "ImageCompare.h"
 #include "JacobiScene.h"
 #include "Legend.h"
+#include "Normals.h"
 #include "OffscreenRenderer.h"
 #include "Picking.h"
 #include "RenderCases.h"
@@ -335,6 +338,54 @@ class TestRender : public QObject {
                                 .arg(at)
                                 .arg(top)
                                 .arg(bottom)));
+    }
+
+    // Crumpled paper pulled flat kept no sign of its creases: the surface was flat again
+    // and a sheet crumpled ten times was drawn as a clean white rectangle. The model's
+    // creases (the halves of its broken edges) are drawn as fine lines a shade darker
+    // than the paper, also on a flat sheet; nothing else in the picture changes.
+    void creasesShowOnAFlatSheet() {
+        SceneOptions coarse;
+        coarse.resolution = 9;
+        Simulation sim(*makeScene("press", coarse));
+        sim.world().sphere.active = false;
+        Sheet& sheet = sim.world().sheet;
+        std::vector<Vec3> normals;
+        computeVertexNormals(sheet, normals);
+        int broken = 0;
+        for (Index e = 0; e < sheet.springs.size() && broken < 6; e += 7)
+            if (canBreak(sheet, e) && breakEdge(sheet, e, normals, 0.25, 0) != kNone) ++broken;
+        QCOMPARE(broken, 6);
+        for (Vec3& p : sheet.verts.x) p.y() = 0.0; // pulled flat: no fold left to shade
+        sim.sheetEdited();
+        const SheetSnapshot snap = makeSnapshot(sim);
+        OrbitCamera camera = namedView("top").value();
+        camera.fitPoints(snap.x, double(kWidth) / kHeight);
+        RenderOptions options;
+        options.legend = false;
+        options.sphere = false;
+        const QImage marked = renderer->render(snap, camera, options);
+        options.creases = false;
+        const QImage clean = renderer->render(snap, camera, options);
+        int darker = 0, lighter = 0;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) {
+                const int d = qGray(marked.pixel(x, y)) - qGray(clean.pixel(x, y));
+                darker += d < -2 ? 1 : 0;
+                lighter += d > 2 ? 1 : 0;
+            }
+        qInfo("%d pixels darker with the creases drawn, %d lighter", darker, lighter);
+        QVERIFY2(darker > 60, qPrintable(QString::number(darker))); // 12 halves, a line each
+        // (Where a crease meets the sheet's edge its line ends a pixel over the desk.)
+        QVERIFY2(lighter <= darker / 50, qPrintable(QString::number(lighter)));
+        // The same sheet unbroken draws the same with or without.
+        Simulation whole(*makeScene("press", coarse));
+        whole.world().sphere.active = false;
+        const SheetSnapshot plain = makeSnapshot(whole);
+        options.creases = true;
+        const QImage a = renderer->render(plain, camera, options);
+        options.creases = false;
+        QCOMPARE(compareImages(a, renderer->render(plain, camera, options)).differingFraction, 0.0);
     }
 
     void thePaperIsInThePicture() {

@@ -738,6 +738,31 @@ class TestSimulateCli : public QObject {
         QCOMPARE(kept.readAll(), QByteArray("an earlier frame the user keeps"));
     }
 
+    // A crumpled sheet's creases are drawn as fine lines; --no-creases draws the surface
+    // alone. A sheet that has not broken draws the same either way.
+    void renderDrawsCreasesUnlessAsked() {
+        QTemporaryDir dir;
+        const QString sheet = dir.filePath(QStringLiteral("c.paper"));
+        QCOMPARE(runPaperfold({"simulate", "--scene", "press", "--integrator", "jacobi", "--steps",
+                               "240", "--save", sheet})
+                     .exitCode,
+                 0);
+        const auto draw = [&](const QStringList& from, const QString& name, bool creases) {
+            QStringList args = QStringList{"render"} + from +
+                               QStringList{"--size", "240x160", "--output", dir.filePath(name)};
+            if (!creases) args << QStringLiteral("--no-creases");
+            const Result r = runPaperfold(args, true);
+            return r.exitCode == 0 ? QImage(dir.filePath(name)) : QImage();
+        };
+        const QImage marked = draw({"--load", sheet}, "marked.png", true);
+        const QImage clean = draw({"--load", sheet}, "clean.png", false);
+        QVERIFY(!marked.isNull() && !clean.isNull());
+        QVERIFY(marked != clean);
+        const QImage fresh = draw({"--scene", "press"}, "fresh.png", true);
+        QVERIFY(!fresh.isNull());
+        QCOMPARE(fresh, draw({"--scene", "press"}, "fresh-clean.png", false));
+    }
+
     void renderComparesWithAReference() {
         QTemporaryDir dir;
         const QString base = dir.filePath(QStringLiteral("base.png"));

@@ -300,6 +300,14 @@
         <source>Cr&amp;umple Cycles (crumpled and pulled flat, ten times)</source>
         <translation>&amp;Knüllen (zehnmal zerknüllt und glatt gezogen)</translation>
     </message>
+    <message>
+        <source>&amp;Crease Lines</source>
+        <translation>&amp;Knicklinien</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s creases drawn as fine lines a shade darker than the paper, as the damaged fibres of a crease show, also once the paper is pulled flat</source>
+        <translation>Die Knicke des Papiers als feine Linien, etwas dunkler als das Papier, wie die verletzten Fasern eines Knicks sie zeigen, auch wenn das Papier wieder glattgezogen ist</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>

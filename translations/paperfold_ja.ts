@@ -295,6 +295,14 @@
         <source>Cr&amp;umple Cycles (crumpled and pulled flat, ten times)</source>
         <translation>くしゃくしゃ反復（10回丸めて平らに戻す）(&amp;U)</translation>
     </message>
+    <message>
+        <source>&amp;Crease Lines</source>
+        <translation>折り目の線(&amp;C)</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s creases drawn as fine lines a shade darker than the paper, as the damaged fibres of a crease show, also once the paper is pulled flat</source>
+        <translation>紙の折り目を、紙より少し濃い細い線で描きます。折り目の傷んだ繊維が見せるように、紙を平らに伸ばした後も残ります</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>

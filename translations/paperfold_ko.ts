@@ -295,6 +295,14 @@
         <source>Cr&amp;umple Cycles (crumpled and pulled flat, ten times)</source>
         <translation>구기기 반복 (열 번 구겼다 펴기)(&amp;U)</translation>
     </message>
+    <message>
+        <source>&amp;Crease Lines</source>
+        <translation>접힌 자국 선(&amp;C)</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s creases drawn as fine lines a shade darker than the paper, as the damaged fibres of a crease show, also once the paper is pulled flat</source>
+        <translation>종이의 접힌 자국을 종이보다 조금 어두운 가는 선으로 그립니다. 접힌 곳의 상한 섬유처럼, 종이를 평평하게 편 뒤에도 보입니다</translation>
+    </message>
 </context>
 <context>
     <name>pf::ChartBrowser</name>

@@ -68,6 +68,9 @@ void ActionTexts::apply(const QObject* window) {
     set("view.front", tr("&Front"));
     set("view.iso", tr("&Isometric"));
     set("view.fit", tr("Fit to &sheet"));
+    set("view.creases", tr("&Crease Lines"),
+        tr("The paper's creases drawn as fine lines a shade darker than the paper, as the "
+           "damaged fibres of a crease show, also once the paper is pulled flat"));
     set("help", tr("&Mouse and Keys"));
     set("about", tr("&About PaperFold"));
     set("language.", tr("System language"));

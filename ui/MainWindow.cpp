@@ -552,6 +552,21 @@ void MainWindow::createActions() {
     };
     connect(paperLook_, &PaperLookMenu::lookChanged, this, showLook);
     showLook(paperLook_->look());
+
+    // A look, kept for the next session like the paper's colour (not an undo step).
+    QAction* creases = make("view.creases");
+    creases->setCheckable(true);
+    creases->setChecked(QSettings().value(QLatin1String(kCreasesSetting), true).toBool());
+    auto showCreases = [this](bool on) {
+        RenderOptions o = viewport_->renderOptions();
+        o.creases = on;
+        viewport_->setRenderOptions(o);
+    };
+    connect(creases, &QAction::toggled, this, [showCreases](bool on) {
+        QSettings().setValue(QLatin1String(kCreasesSetting), on);
+        showCreases(on);
+    });
+    showCreases(creases->isChecked());
 }
 
 void MainWindow::createMenus() {
@@ -587,6 +602,7 @@ void MainWindow::createMenus() {
         viewMenu_->addAction(action(name));
     viewMenu_->addSeparator();
     viewMenu_->addMenu(paperLook_->menu());
+    viewMenu_->addAction(action("view.creases"));
     languageMenu_ = viewMenu_->addMenu(QString());
     languageMenu_->addActions(languageGroup_->actions());
 

@@ -52,6 +52,8 @@ class MainWindow : public QMainWindow {
     // The size of the last image exported, offered by the next Export Image (a user typed
     // 1280x720 and was offered 1920x1080 again every time).
     static constexpr const char* kImageSizeSetting = "export/imageSize";
+    // View ▸ Crease Lines, kept for the next session.
+    static constexpr const char* kCreasesSetting = "look/creases";
     // How often the live numbers (step time, stretch, fps) are redrawn at most.
     static constexpr int kReadoutMs = 250;
     // Paper the hand holds this far from the cursor, with pins holding it too, is held
