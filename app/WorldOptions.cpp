@@ -36,7 +36,9 @@ void addWorldOptions(QCommandLineParser& parser) {
         {QStringLiteral("phi"), QStringLiteral("Fragility φ in [0, 1]."), QStringLiteral("f")},
         {QStringLiteral("psi"), QStringLiteral("Recursive-break tendency ψ in [0, 1]."),
          QStringLiteral("f")},
-        {QStringLiteral("sigma"), QStringLiteral("Crumple smoothing σ in [0, 4] (rendering: 0 keeps flat facets and sharp creases, larger rounds them off)."),
+        {QStringLiteral("sigma"),
+         QStringLiteral("Crumple smoothing σ in [0, 4] (rendering: 0 keeps flat facets and sharp "
+                        "creases, larger rounds them off)."),
          QStringLiteral("f")},
         {QStringLiteral("integrator"),
          QStringLiteral("Integrator: %1.").arg(joined(integratorNames())), QStringLiteral("name")},

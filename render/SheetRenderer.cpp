@@ -336,7 +336,7 @@ void SheetRenderer::buildLines(const SheetSnapshot& snap, const RenderOptions& o
 }
 
 void SheetRenderer::uploadLines(const SheetSnapshot& snap, const RenderOptions& options) {
-    const LinesKey key{snap.serial,    options.overlays,   options.pins,
+    const LinesKey key{snap.serial,     options.overlays,   options.pins,
                        options.creases, options.look.color, options.probabilityRange};
     if (snap.serial != 0 && key == linesKey_) return;
     linesKey_ = key;

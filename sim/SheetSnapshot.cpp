@@ -15,9 +15,9 @@ bool drawsTheSame(const SheetSnapshot& a, const SheetSnapshot& b) {
            a.springKind == b.springKind && a.breakable == b.breakable &&
            a.breakProbability == b.breakProbability && a.strain == b.strain &&
            a.recentlyBroken == b.recentlyBroken && a.creaseHalf == b.creaseHalf &&
-           a.vertexStrain == b.vertexStrain &&
-           a.pinned == b.pinned && a.held == b.held && toolDrawsTheSame(a.sphere, b.sphere) &&
-           a.groundEnabled == b.groundEnabled && a.groundHeight == b.groundHeight;
+           a.vertexStrain == b.vertexStrain && a.pinned == b.pinned && a.held == b.held &&
+           toolDrawsTheSame(a.sphere, b.sphere) && a.groundEnabled == b.groundEnabled &&
+           a.groundHeight == b.groundHeight;
 }
 
 void pinnedAndHeld(const Simulation& sim, std::vector<Index>& pinned, std::vector<Index>& held) {
@@ -66,12 +66,17 @@ SheetSnapshot makeSnapshot(const Simulation& sim, double recentSeconds) {
             snap.vertexStrain[b] = std::max(snap.vertexStrain[b], e);
         }
     }
+    // Read from the creases (each names its break), not from the whole log of events,
+    // which undo and redo lengthen.
     snap.creaseHalf.assign(static_cast<std::size_t>(S.size()), 0);
-    for (const DamageEvent& ev : s.events)
-        if (ev.active && ev.kind == EventKind::Break)
-            for (const Index half : {ev.springs[0], ev.springs[1]})
-                if (half >= 0 && half < S.size() && S.kind[half] == SpringKind::Structural)
-                    snap.creaseHalf[half] = 1;
+    const auto events = static_cast<Index>(s.events.size());
+    for (Index k = 0; k < S.size(); ++k) {
+        if (S.kind[k] != SpringKind::Crease || S.event[k] < 0 || S.event[k] >= events) continue;
+        const DamageEvent& ev = s.events[S.event[k]];
+        for (const Index half : {ev.springs[0], ev.springs[1]})
+            if (half >= 0 && half < S.size() && S.kind[half] == SpringKind::Structural)
+                snap.creaseHalf[half] = 1;
+    }
     const auto recentSteps = static_cast<std::int64_t>(std::ceil(recentSeconds / world.params.dt));
     // The log is in step order (a redo logs again at its own step), so only its tail
     // can be recent.

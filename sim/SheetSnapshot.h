@@ -22,8 +22,8 @@ struct SheetSnapshot {
     // Per spring: a half of a broken edge that has not broken itself, so that the crease
     // runs along it (through the vertex the break inserted, where the surface is).
     std::vector<std::uint8_t> creaseHalf;
-    std::vector<float> vertexStrain;          // per vertex: max |strain| of its structural springs
-    std::vector<Index> pinned;                // the vertices that stand still (pins, a grab)
+    std::vector<float> vertexStrain; // per vertex: max |strain| of its structural springs
+    std::vector<Index> pinned;       // the vertices that stand still (pins, a grab)
     std::vector<Index> held; // held for a while by a scripted hand that lets go (a fold's carry)
     SphereTool sphere;
     bool groundEnabled = true;
