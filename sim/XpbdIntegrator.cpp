@@ -1065,10 +1065,11 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // the undamped step, whose overshoot their scenes' breaks and folds were measured
     // with. It reads only what a saved sheet keeps, so a loaded sheet resumes exactly.
     const bool toolInThePaper = (sp.active && !toolTriangles_.empty()) || !grips.empty();
-    const bool hanging = pins > 0 && !aPinMoves(V, hand) && !toolInThePaper &&
-                         mat.stretchStiffness >= kDampedProjectionStiffness;
-    projectStretch(sheet, params.dt, kProjectionIterations,
-                   hanging ? kDampedProjectionCompliance : kProjectionCompliance);
+    const bool hanging = pins > 0 && !aPinMoves(V, hand) && !toolInThePaper;
+    // (Only paper is projected: kPaperStiffness says why.)
+    if (mat.stretchStiffness >= kPaperStiffness)
+        projectStretch(sheet, params.dt, kProjectionIterations,
+                       hanging ? kDampedProjectionCompliance : kProjectionCompliance);
     holdToolWhereThePaperIsTaut(
         sphereStart, [&](const Vec3& c) { collideSphere(c, c, false); }, toolInThePaper, sheet);
     collideGround(false);

@@ -83,7 +83,7 @@ inline constexpr double kProjectedStretch = 3e-3;
 // free vertex the step is left to the sub-steps.
 inline constexpr int kMaxProjectedDegree = 64;
 inline constexpr double kProjectionCompliance = 1e-3;
-// Where paper (a material at least as stiff as kDampedProjectionStiffness) hangs from
+// Where paper (a material at least as stiff as kPaperStiffness) hangs from
 // pins that stand still or from the hand, with the tool out of it, the compliance is this
 // instead, and it damps the Newton step (Levenberg-Marquardt). A triangle mesh has more
 // edges than free directions, so J W Jᵀ is nearly singular wherever the sheet is flat,
@@ -94,12 +94,15 @@ inline constexpr double kProjectionCompliance = 1e-3;
 // about one (test_paper_behaviour). docs/speed.md has the times, the values tried and
 // why the damping is kept out of free sheets, the tool and pins that move.
 inline constexpr double kDampedProjectionCompliance = 0.02;
-// The damped projection is for paper: a material softer than this (E·t, N/m; tissue is
-// 5·10⁴) keeps the undamped one. Damped at 0.03, the stability map's hanging sheet at
-// 100 N/m blew up at all 12 of the resolutions and steps around the map's cell (6 of 12
-// undamped), at 1,000 N/m at 3 (2 undamped); at 10⁴ and 5·10⁴ N/m, damped at 0.02,
-// at none (docs/speed.md).
-inline constexpr double kDampedProjectionStiffness = 1e4;
+// The fast projection, damped or not, is for paper (E·t, N/m; tissue is 5·10⁴): it
+// pulls every stretched edge back to its rest length and gives the vertices that move's
+// velocity, and a sheet much softer, stretched again by its own weight every step, was
+// pumped by it. The stability map's hanging sheet at 100 N/m (its ×1) blew up in 8 of
+// the 12 resolutions and steps around the map's cell, at 1,000 N/m in 2 (undamped; damped
+// at 0.03 in all 12 and in 3); at 10⁴ and 5·10⁴ N/m, damped at 0.02, in none (docs/speed.md,
+// docs/solver-lab.md). A softer material is left to the sub-steps, whose compliance
+// gives it the stretch its stiffness implies.
+inline constexpr double kPaperStiffness = 1e4;
 // From the fourth damped Newton iteration of a projection on, one that leaves more than
 // this share of the worst stretch it started from ends the damping for the rest of it:
 // between the still pins of a crumpled sheet the damped iterations crawled (0.96 of the
