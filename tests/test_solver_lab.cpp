@@ -181,8 +181,9 @@ class TestSolverLab : public QObject {
         // a sheet of 100 N/m (the map's ×1) is stretched again by its own weight every
         // step, and the pulls pumped energy into it. Around the map's ×1 `drape` cell at
         // 1/7680 s (resolutions 6-9; steps of 1/7000, 1/7680 and 1/8500 s) it blew up in
-        // 8 of these 12 cells, and at ×10 in 2. Softer than kPaperStiffness the sub-steps
-        // alone now give the sheet the stretch its stiffness implies.
+        // 8 of these 12 cells, and at ×10 in 2 (in 8 and 3 once the air slowed the
+        // sheet's turning). Softer than kPaperStiffness the sub-steps alone now give the
+        // sheet the stretch its stiffness implies.
         int failed = 0;
         for (const double k : {1.0, 10.0})
             for (const int resolution : {6, 7, 8, 9})

@@ -1,0 +1,122 @@
+#include "AirDrag.h"
+
+#include "Normals.h"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <optional>
+
+namespace pf {
+
+namespace {
+
+// How pins let the sheet turn as a rigid body: about its centre of mass when nothing
+// holds it, about a pin (or pins at one point) in any direction, about the line
+// through pins in a row; pins that span a plane hold it from turning at all.
+struct Pivot {
+    bool free = true; // no pins: the centre of mass
+    Vec3 point = Vec3::Zero();
+    std::optional<Vec3> axis; // unit; empty: any direction
+};
+
+constexpr double kPinsApart = 1e-6; // m: pins closer than this hold one point or line
+
+std::optional<Pivot> pivotOf(const Vertices& V) {
+    std::vector<Index> pins;
+    for (Index i = 0; i < V.size(); ++i)
+        if (V.pinned[i]) pins.push_back(i);
+    Pivot p;
+    if (pins.empty()) return p;
+    p.free = false;
+    const Vec3 first = V.x[pins.front()];
+    Index far = pins.front();
+    for (Index i : pins)
+        if ((V.x[i] - first).squaredNorm() > (V.x[far] - first).squaredNorm()) far = i;
+    p.point = first;
+    const Vec3 span = V.x[far] - first;
+    if (!(span.norm() > kPinsApart)) return p;
+    const Vec3 axis = span.normalized();
+    for (Index i : pins) {
+        const Vec3 d = V.x[i] - first;
+        if ((d - d.dot(axis) * axis).norm() > kPinsApart) return std::nullopt;
+    }
+    p.axis = axis;
+    return p;
+}
+
+} // namespace
+
+void dragTurningThroughAir(Sheet& sheet, const std::vector<double>& w, double arealDensity,
+                           double dt, std::vector<Vec3>& normals) {
+    auto& V = sheet.verts;
+    const Index nv = V.size();
+    if (!(arealDensity > 0.0) || !(dt > 0.0)) return;
+    // Paper driven by pins that move (the Fold tool's carry, a hand, a scene's script)
+    // turns as they take it.
+    for (Index i = 0; i < nv; ++i)
+        if (V.pinned[i] && V.v[i] != Vec3::Zero()) return;
+    std::optional<Pivot> pivot = pivotOf(V);
+    if (!pivot) return;
+    const auto turns = [&](Index i) { return w[i] != 0.0 && !V.pinned[i]; };
+    double mass = 0.0;
+    Vec3 centre = Vec3::Zero(), momentum = Vec3::Zero();
+    for (Index i = 0; i < nv; ++i) {
+        if (!turns(i)) continue;
+        mass += V.m[i];
+        centre += V.m[i] * V.x[i];
+        momentum += V.m[i] * V.v[i];
+    }
+    if (!(mass > 0.0)) return;
+    const bool free = pivot->free;
+    // A free sheet turns about its centre of mass, which goes on as it was.
+    const Vec3 drift = free ? Vec3(momentum / mass) : Vec3::Zero();
+    if (free) pivot->point = centre / mass;
+    const Vec3 o = pivot->point;
+    // The rigid rotation that carries the sheet's angular momentum about the pivot:
+    // ω = I⁻¹ L, about the axis only where pins in a row allow no other.
+    Vec3 angular = Vec3::Zero();
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+    for (Index i = 0; i < nv; ++i) {
+        if (!turns(i)) continue;
+        const Vec3 r = V.x[i] - o;
+        angular += V.m[i] * r.cross(V.v[i] - drift);
+        inertia += V.m[i] * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+    }
+    const Eigen::LDLT<Eigen::Matrix3d> solve(inertia);
+    const auto rotationFor = [&](const Vec3& moment) -> Vec3 {
+        if (pivot->axis) {
+            const Vec3& a = *pivot->axis;
+            const double about = a.dot(inertia * a);
+            return about > 0.0 ? Vec3(moment.dot(a) / about * a) : Vec3::Zero();
+        }
+        // A sheet folded to a line has no inertia about it, and nothing to turn broadside.
+        if (solve.info() != Eigen::Success ||
+            !(solve.vectorD().minCoeff() > 1e-12 * inertia.trace()))
+            return Vec3::Zero();
+        return solve.solve(moment);
+    };
+    const Vec3 omega = rotationFor(angular);
+    if (!omega.allFinite() || omega.isZero(0.0)) return;
+
+    // Each vertex's broadside speed in that rotation meets the drag of its own area of
+    // paper; the torque of those drags slows the rotation as a whole. Taken as a rigid
+    // change, it leaves the sheet's shape alone: applied vertex by vertex along the
+    // normals of crumpled paper, it pulled neighbours apart (tissue's crumple-cycles
+    // reached 10.5 % stretch).
+    computeVertexNormals(sheet, normals);
+    const double k = kAirDensity * kPlateDragCoefficient / (2.0 * arealDensity);
+    Vec3 angularImpulse = Vec3::Zero();
+    for (Index i = 0; i < nv; ++i) {
+        if (!turns(i)) continue;
+        const Vec3 r = V.x[i] - o;
+        const Vec3& n = normals[i];
+        const double un = omega.cross(r).dot(n);
+        angularImpulse += V.m[i] * (un / (1.0 + dt * k * std::abs(un)) - un) * r.cross(n);
+    }
+    const Vec3 slowing = rotationFor(angularImpulse);
+    if (!slowing.allFinite()) return;
+    for (Index i = 0; i < nv; ++i)
+        if (turns(i)) V.v[i] += slowing.cross(V.x[i] - o);
+}
+
+} // namespace pf

@@ -1,0 +1,41 @@
+#pragma once
+
+#include "Sheet.h"
+#include "Types.h"
+
+#include <vector>
+
+namespace pf {
+
+// The air's resistance to a sheet turning through it.
+//
+// Real paper hanging from two corners stops swinging within a few swings: its
+// broadside pushes air aside, and the drag (½ ρ C_d A v², about its own weight at
+// 1 m/s for an A4 sheet) is as large as the pull that swings it. Without air the
+// model's `drape` swung for more than a minute. Issue 9 also asks that a falling sheet
+// fall at 1.00 g in any orientation, which real air would not allow; so the drag acts
+// on the sheet's turning only, never on its centre of mass: each vertex's share of the
+// sheet's rigid rotation, ω × (x − o), meets the quadratic drag of its own area of paper
+// along its normal, and the torque of those drags slows that rotation, as a rigid
+// change of the velocities. A free sheet turns about its centre of mass (o), which so
+// moves exactly as without air; a pinned one about its pin, or about the line through
+// pins in a row (a rigid turn about them stretches nothing); pins that span a plane, or
+// pins that move (a hand, the Fold tool, a scene's script), leave the turning to the
+// paper. Bending, folding and crumpling (what is not rigid rotation) and the sheet's
+// sliding in its own plane are left alone.
+//
+// Constants: air at 20 °C and sea level, 1.20 kg/m³; a flat plate broadside to the
+// flow, C_d = 1.17 (Hoerner, "Fluid-Dynamic Drag", 1965, ch. 3: square plate).
+inline constexpr double kAirDensity = 1.20;           // kg/m³
+inline constexpr double kPlateDragCoefficient = 1.17; // flat plate, broadside
+
+// Applies the drag of one step of `dt` seconds to the velocities of the vertices with
+// w[i] > 0 (the free ones; pins move as their script says). The paper's areal density
+// gives each vertex's mass per area, so the drag per mass is ρ C_d u² / (2 ρ_A); each
+// vertex's drag over the step is the exact solution of that, u / (1 + dt k |u|), so the
+// change takes energy from the turn at any step and never adds any.
+// `normals` is scratch space.
+void dragTurningThroughAir(Sheet& sheet, const std::vector<double>& w, double arealDensity,
+                           double dt, std::vector<Vec3>& normals);
+
+} // namespace pf
