@@ -24,6 +24,7 @@
 #include "WorkerPool.h"
 #include "WrappedToolTips.h"
 
+#include <QAbstractItemView>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
@@ -1628,6 +1629,28 @@ class TestEditor : public QObject {
         angle->setFocus();
         phi->setFocus();
         QCOMPARE(window->focusWidget(), static_cast<QWidget*>(phi));
+    }
+
+    // A paper chosen from the Solver dock's list leaves the keys with the view: a user
+    // chose tissue, then pressed 3, g and i for views and the grain, and nothing
+    // happened until a toolbar button was clicked (the list kept the focus and searched
+    // its items for the letters).
+    void aListChosenFromLeavesTheKeysWithTheView() {
+        Viewport* view = window->viewport();
+        for (QComboBox* list :
+             {window->solverPanel()->materialBox(), window->panel()->foldKindBox()}) {
+            view->setFocus(Qt::OtherFocusReason);
+            QTRY_COMPARE(window->focusWidget(), static_cast<QWidget*>(view));
+            const int before = list->currentIndex();
+            QTest::mouseClick(list, Qt::LeftButton);
+            QTRY_VERIFY(list->view()->isVisible());
+            QTest::keyClick(list->view(), before == 0 ? Qt::Key_Down : Qt::Key_Up);
+            QTest::keyClick(list->view(), Qt::Key_Return);
+            QTRY_VERIFY(!list->view()->isVisible());
+            QVERIFY(list->currentIndex() != before);
+            QCOMPARE(window->focusWidget(), static_cast<QWidget*>(view));
+            list->setCurrentIndex(before);
+        }
     }
 
     // The first-run hint shows until the first thing done in the view, and not again.

@@ -10,6 +10,9 @@ DockScrollArea::DockScrollArea(QWidget* content, QWidget* parent) : QScrollArea(
     setWidgetResizable(true);
     setFrameShape(QFrame::NoFrame);
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // A click in the dock that lands on no control leaves the keys where they were (the
+    // view's shortcuts), not with the scroll area; the wheel still scrolls it.
+    setFocusPolicy(Qt::NoFocus);
     contentsHint_ = content->sizeHint();
     content->installEventFilter(this); // its size hints change with the language
     verticalScrollBar()->installEventFilter(this);

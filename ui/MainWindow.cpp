@@ -33,6 +33,7 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QEventLoop>
 #include <QFileInfo>
@@ -659,6 +660,11 @@ void MainWindow::createDocks() {
             if (auto* edit = box->findChild<QLineEdit*>())
                 connect(edit, &QLineEdit::returnPressed, this,
                         [this] { viewport_->setFocus(Qt::OtherFocusReason); });
+    // A list chosen from with the mouse leaves the keys where they were: a user chose
+    // tissue, then pressed 3, g and i, and the list, keeping the focus, searched its
+    // items for the letters. Tab still reaches it.
+    for (QWidget* panel : {static_cast<QWidget*>(panel_), static_cast<QWidget*>(solver_)})
+        for (auto* list : panel->findChildren<QComboBox*>()) list->setFocusPolicy(Qt::TabFocus);
     viewMenu_->addSeparator();
     viewMenu_->addAction(panelDock_->toggleViewAction());
     viewMenu_->addAction(historyDock_->toggleViewAction());
