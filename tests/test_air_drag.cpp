@@ -1,7 +1,8 @@
 // The air resists a sheet's turning (sim/AirDrag.h) and nothing else: a plate turning
 // broadside slows as quadratic drag says, a tumbling sheet still falls at exactly g with
-// its momentum kept, and a sheet hanging from two corners stops swinging within seconds
-// (it swung for more than a minute without air).
+// its momentum kept, and the swing of a sheet hanging from two corners dies down within
+// seconds (it swung for more than a minute without air; a swing of a few millimetres
+// still lingers, docs/material.md).
 #include "AirDrag.h"
 #include "Material.h"
 #include "Scenes.h"
@@ -123,8 +124,9 @@ class TestAirDrag : public QObject {
     // The `drape` sheet as the editor starts it: hung from the two corners of a short
     // edge, it falls and swings about them. Falling from where it starts to where it
     // hangs releases m g Δh ≈ 7 mJ; without air it kept swinging with up to 2.5 mJ for
-    // more than a minute (2.6 mJ of 5.5 mJ from 6 to 10 s). Real paper stops within a few swings.
-    void aHangingSheetStopsSwingingWithinSeconds() {
+    // more than a minute (2.6 mJ of 5.5 mJ from 6 to 10 s). Real paper stops within a few
+    // swings.
+    void aHangingSheetsSwingDiesDownWithinSeconds() {
         World w = makeEditorScene("drape", {}, 0.02);
         Simulation sim(std::move(w));
         sim.setThreads(1);
