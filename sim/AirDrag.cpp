@@ -4,7 +4,6 @@
 
 #include <Eigen/Dense>
 #include <cmath>
-#include <optional>
 
 namespace pf {
 
@@ -14,20 +13,20 @@ namespace {
 // holds it, about a pin (or pins at one point) in any direction, about the line
 // through pins in a row; pins that span a plane hold it from turning at all.
 struct Pivot {
-    bool free = true; // no pins: the centre of mass
+    enum class Kind { Free, Point, Axis, Held } kind = Kind::Free;
     Vec3 point = Vec3::Zero();
-    std::optional<Vec3> axis; // unit; empty: any direction
+    Vec3 axis = Vec3::Zero(); // unit, for Kind::Axis
 };
 
 constexpr double kPinsApart = 1e-6; // m: pins closer than this hold one point or line
 
-std::optional<Pivot> pivotOf(const Vertices& V) {
+Pivot pivotOf(const Vertices& V) {
     std::vector<Index> pins;
     for (Index i = 0; i < V.size(); ++i)
         if (V.pinned[i]) pins.push_back(i);
     Pivot p;
     if (pins.empty()) return p;
-    p.free = false;
+    p.kind = Pivot::Kind::Point;
     const Vec3 first = V.x[pins.front()];
     Index far = pins.front();
     for (Index i : pins)
@@ -38,8 +37,12 @@ std::optional<Pivot> pivotOf(const Vertices& V) {
     const Vec3 axis = span.normalized();
     for (Index i : pins) {
         const Vec3 d = V.x[i] - first;
-        if ((d - d.dot(axis) * axis).norm() > kPinsApart) return std::nullopt;
+        if ((d - d.dot(axis) * axis).norm() > kPinsApart) {
+            p.kind = Pivot::Kind::Held;
+            return p;
+        }
     }
+    p.kind = Pivot::Kind::Axis;
     p.axis = axis;
     return p;
 }
@@ -55,8 +58,8 @@ void dragTurningThroughAir(Sheet& sheet, const std::vector<double>& w, double ar
     // turns as they take it.
     for (Index i = 0; i < nv; ++i)
         if (V.pinned[i] && V.v[i] != Vec3::Zero()) return;
-    std::optional<Pivot> pivot = pivotOf(V);
-    if (!pivot) return;
+    Pivot pivot = pivotOf(V);
+    if (pivot.kind == Pivot::Kind::Held) return;
     const auto turns = [&](Index i) { return w[i] != 0.0 && !V.pinned[i]; };
     double mass = 0.0;
     Vec3 centre = Vec3::Zero(), momentum = Vec3::Zero();
@@ -67,11 +70,11 @@ void dragTurningThroughAir(Sheet& sheet, const std::vector<double>& w, double ar
         momentum += V.m[i] * V.v[i];
     }
     if (!(mass > 0.0)) return;
-    const bool free = pivot->free;
+    const bool free = pivot.kind == Pivot::Kind::Free;
     // A free sheet turns about its centre of mass, which goes on as it was.
     const Vec3 drift = free ? Vec3(momentum / mass) : Vec3::Zero();
-    if (free) pivot->point = centre / mass;
-    const Vec3 o = pivot->point;
+    if (free) pivot.point = centre / mass;
+    const Vec3 o = pivot.point;
     // The rigid rotation that carries the sheet's angular momentum about the pivot:
     // ω = I⁻¹ L, about the axis only where pins in a row allow no other.
     Vec3 angular = Vec3::Zero();
@@ -84,8 +87,8 @@ void dragTurningThroughAir(Sheet& sheet, const std::vector<double>& w, double ar
     }
     const Eigen::LDLT<Eigen::Matrix3d> solve(inertia);
     const auto rotationFor = [&](const Vec3& moment) -> Vec3 {
-        if (pivot->axis) {
-            const Vec3& a = *pivot->axis;
+        if (pivot.kind == Pivot::Kind::Axis) {
+            const Vec3& a = pivot.axis;
             const double about = a.dot(inertia * a);
             return about > 0.0 ? Vec3(moment.dot(a) / about * a) : Vec3::Zero();
         }
