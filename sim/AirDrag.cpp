@@ -21,22 +21,23 @@ struct Pivot {
 constexpr double kPinsApart = 1e-6; // m: pins closer than this hold one point or line
 
 Pivot pivotOf(const Vertices& V) {
-    std::vector<Index> pins;
-    for (Index i = 0; i < V.size(); ++i)
-        if (V.pinned[i]) pins.push_back(i);
+    const Index nv = V.size();
+    Index first = 0;
+    while (first < nv && !V.pinned[first]) ++first;
     Pivot p;
-    if (pins.empty()) return p;
+    if (first == nv) return p;
     p.kind = Pivot::Kind::Point;
-    const Vec3 first = V.x[pins.front()];
-    Index far = pins.front();
-    for (Index i : pins)
-        if ((V.x[i] - first).squaredNorm() > (V.x[far] - first).squaredNorm()) far = i;
-    p.point = first;
-    const Vec3 span = V.x[far] - first;
+    p.point = V.x[first];
+    Index far = first;
+    for (Index i = first; i < nv; ++i)
+        if (V.pinned[i] && (V.x[i] - p.point).squaredNorm() > (V.x[far] - p.point).squaredNorm())
+            far = i;
+    const Vec3 span = V.x[far] - p.point;
     if (!(span.norm() > kPinsApart)) return p;
     const Vec3 axis = span.normalized();
-    for (Index i : pins) {
-        const Vec3 d = V.x[i] - first;
+    for (Index i = first; i < nv; ++i) {
+        if (!V.pinned[i]) continue;
+        const Vec3 d = V.x[i] - p.point;
         if ((d - d.dot(axis) * axis).norm() > kPinsApart) {
             p.kind = Pivot::Kind::Held;
             return p;
@@ -49,18 +50,14 @@ Pivot pivotOf(const Vertices& V) {
 
 } // namespace
 
-void dragTurningThroughAir(Sheet& sheet, const std::vector<double>& w, double arealDensity,
-                           double dt, std::vector<Vec3>& normals) {
+void dragTurningThroughAir(Sheet& sheet, double arealDensity, double dt,
+                           std::vector<Vec3>& normals) {
     auto& V = sheet.verts;
     const Index nv = V.size();
     if (!(arealDensity > 0.0) || !(dt > 0.0)) return;
-    // Paper driven by pins that move (the Fold tool's carry, a hand, a scene's script)
-    // turns as they take it.
-    for (Index i = 0; i < nv; ++i)
-        if (V.pinned[i] && V.v[i] != Vec3::Zero()) return;
     Pivot pivot = pivotOf(V);
     if (pivot.kind == Pivot::Kind::Held) return;
-    const auto turns = [&](Index i) { return w[i] != 0.0 && !V.pinned[i]; };
+    const auto turns = [&](Index i) { return !V.pinned[i] && V.m[i] > 0.0; };
     double mass = 0.0;
     Vec3 centre = Vec3::Zero(), momentum = Vec3::Zero();
     for (Index i = 0; i < nv; ++i) {

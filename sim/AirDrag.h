@@ -29,13 +29,13 @@ namespace pf {
 inline constexpr double kAirDensity = 1.20;           // kg/m³
 inline constexpr double kPlateDragCoefficient = 1.17; // flat plate, broadside
 
-// Applies the drag of one step of `dt` seconds to the velocities of the vertices with
-// w[i] > 0 (the free ones; pins move as their script says). The paper's areal density
-// gives each vertex's mass per area, so the drag per mass is ρ C_d u² / (2 ρ_A); each
-// vertex's drag over the step is the exact solution of that, u / (1 + dt k |u|), so the
-// change takes energy from the turn at any step and never adds any.
-// `normals` is scratch space.
-void dragTurningThroughAir(Sheet& sheet, const std::vector<double>& w, double arealDensity,
-                           double dt, std::vector<Vec3>& normals);
+// Applies the drag of one step of `dt` seconds to the velocities of the free vertices
+// (pins move as their script says). Paper driven by pins that move is left to them: the
+// caller does not call it then. The paper's areal density gives each vertex's mass per
+// area, so the drag per mass is ρ C_d u² / (2 ρ_A); each vertex's drag over the step is
+// the exact solution of that, u / (1 + dt k |u|), so the change takes energy from the
+// turn at any step and never adds any. `normals` is scratch space.
+void dragTurningThroughAir(Sheet& sheet, double arealDensity, double dt,
+                           std::vector<Vec3>& normals);
 
 } // namespace pf

@@ -825,7 +825,10 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     const Vec3 handFrom = holding ? V.x[hand] : Vec3::Zero();
     const Vec3 handVelocity = holding ? V.v[hand] : Vec3::Zero();
     if (holding) w_[hand] = 1.0 / V.m[hand];
-    dragTurningThroughAir(sheet, w_, mat.arealDensity, params.dt, airNormals_);
+    // Paper driven by pins that move (the Fold tool's carry, a hand, a scene's script)
+    // turns as they take it.
+    if (!aPinMoves(V, kNone))
+        dragTurningThroughAir(sheet, mat.arealDensity, params.dt, airNormals_);
     xPrev_.resize(static_cast<std::size_t>(nv));
     stepStart_ = V.x;
     const SphereTool& sp = contacts_.sphere;

@@ -66,7 +66,6 @@ class TestAirDrag : public QObject {
         spec.density = office.arealDensity;
         Sheet sheet = buildRectangleSheet(spec);
         const std::vector<Vec3> flat = sheet.verts.x;
-        const std::vector<double> w(sheet.verts.m.size(), 1.0);
         std::vector<Vec3> normals;
         const double dt = 1.0 / 240.0, omega0 = 10.0, seconds = 1.0;
         double angle = 0.0, omega = omega0;
@@ -77,7 +76,7 @@ class TestAirDrag : public QObject {
                 sheet.verts.x[i] = turn * flat[i];
                 sheet.verts.v[i] = omega * Vec3::UnitX().cross(sheet.verts.x[i]);
             }
-            dragTurningThroughAir(sheet, w, office.arealDensity, dt, normals);
+            dragTurningThroughAir(sheet, office.arealDensity, dt, normals);
             omega = spinAboutX(sheet.verts);
             angle += omega * dt;
         }

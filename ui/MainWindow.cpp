@@ -654,17 +654,17 @@ void MainWindow::createDocks() {
                 Qt::QueuedConnection);
     // Return in a number box gives the keys back to the view: a user typed 180° into the
     // fold's angle, pressed Return and then 1 for the top view, and the angle became 1°
-    // (the box kept the focus, and a digit is text to it, not a shortcut).
-    for (QWidget* panel : {static_cast<QWidget*>(panel_), static_cast<QWidget*>(solver_)})
+    // (the box kept the focus, and a digit is text to it, not a shortcut). A list chosen
+    // from with the mouse leaves the keys where they were: a user chose tissue, then
+    // pressed 3, g and i, and the list, keeping the focus, searched its items for the
+    // letters. Tab still reaches it.
+    for (QWidget* panel : {static_cast<QWidget*>(panel_), static_cast<QWidget*>(solver_)}) {
         for (auto* box : panel->findChildren<QAbstractSpinBox*>())
             if (auto* edit = box->findChild<QLineEdit*>())
                 connect(edit, &QLineEdit::returnPressed, this,
                         [this] { viewport_->setFocus(Qt::OtherFocusReason); });
-    // A list chosen from with the mouse leaves the keys where they were: a user chose
-    // tissue, then pressed 3, g and i, and the list, keeping the focus, searched its
-    // items for the letters. Tab still reaches it.
-    for (QWidget* panel : {static_cast<QWidget*>(panel_), static_cast<QWidget*>(solver_)})
         for (auto* list : panel->findChildren<QComboBox*>()) list->setFocusPolicy(Qt::TabFocus);
+    }
     viewMenu_->addSeparator();
     viewMenu_->addAction(panelDock_->toggleViewAction());
     viewMenu_->addAction(historyDock_->toggleViewAction());
