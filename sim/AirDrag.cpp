@@ -3,7 +3,10 @@
 #include "Normals.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 namespace pf {
 
@@ -48,9 +51,56 @@ Pivot pivotOf(const Vertices& V) {
     return p;
 }
 
+// A sheet that turns about its pins as a pendulum swings to and fro through the same
+// air: how far it swings (an angle, from hanging), about which axis, and how wide it
+// is along that axis (the breadth the air flows around).
+struct Swing {
+    Vec3 axis = Vec3::Zero();
+    double amplitude = 0.0; // rad; 0 when the sheet does not swing as a pendulum
+    double breadth = 0.0;   // m
+};
+
+// A pendulum at angle θ from hanging turning at ω_a has the amplitude
+// √(θ² + (ω_a / Ω)²), Ω² = m g⊥ d⊥ / I_a (exact for a small swing, and a measure of
+// how far it goes for a large one). A free sheet, or one held at its centre of mass,
+// or turning about the vertical, has no pull back to swing about.
+template <class Turns>
+Swing swingOf(const Vertices& V, const Turns& turns, const Pivot& pivot, const Vec3& omega,
+              const Vec3& centre, double mass, const Eigen::Matrix3d& inertia,
+              const Vec3& gravity) {
+    Swing s;
+    if (pivot.kind != Pivot::Kind::Point && pivot.kind != Pivot::Kind::Axis) return s;
+    const Vec3 a = pivot.kind == Pivot::Kind::Axis ? pivot.axis : Vec3(omega.normalized());
+    const Vec3 arm = centre - pivot.point;
+    const Vec3 armAcross = arm - arm.dot(a) * a;
+    const Vec3 pullAcross = gravity - gravity.dot(a) * a;
+    const double aboutAxis = a.dot(inertia * a);
+    const double pull = mass * pullAcross.norm() * armAcross.norm();
+    if (!(pull > 0.0) || !(aboutAxis > 0.0)) return s;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (Index i = 0; i < V.size(); ++i) {
+        if (!turns(i)) continue;
+        const double along = (V.x[i] - pivot.point).dot(a);
+        lo = std::min(lo, along);
+        hi = std::max(hi, along);
+    }
+    const double angle = std::atan2(a.dot(armAcross.cross(pullAcross)), armAcross.dot(pullAcross));
+    const double turning = omega.dot(a);
+    s.axis = a;
+    s.amplitude = std::sqrt(angle * angle + turning * turning * aboutAxis / pull);
+    s.breadth = hi - lo;
+    return s;
+}
+
 } // namespace
 
-void dragTurningThroughAir(Sheet& sheet, double arealDensity, double dt,
+double oscillatingPlateDrag(double displacementAmplitude, double breadth) {
+    if (!(displacementAmplitude > 0.0) || !(breadth > 0.0)) return kPlateDragCoefficient;
+    const double kc = 2.0 * std::numbers::pi * displacementAmplitude / breadth;
+    return std::max(kPlateDragCoefficient, 8.0 / std::cbrt(kc));
+}
+
+void dragTurningThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravity, double dt,
                            std::vector<Vec3>& normals) {
     auto& V = sheet.verts;
     const Index nv = V.size();
@@ -102,15 +152,22 @@ void dragTurningThroughAir(Sheet& sheet, double arealDensity, double dt,
     // paper; the torque of those drags slows the rotation as a whole. Taken as a rigid
     // change, it leaves the sheet's shape alone: applied vertex by vertex along the
     // normals of crumpled paper, it pulled neighbours apart (tissue's crumple-cycles
-    // reached 10.5 % stretch).
+    // reached 10.5 % stretch). A sheet swinging from its pins meets the drag of a plate
+    // in oscillating flow, each vertex at the width of its own swing.
     computeVertexNormals(sheet, normals);
-    const double k = kAirDensity * kPlateDragCoefficient / (2.0 * arealDensity);
+    const Swing swing = swingOf(V, turns, pivot, omega, centre / mass, mass, inertia, gravity);
+    const double perCoefficient = kAirDensity / (2.0 * arealDensity);
     Vec3 angularImpulse = Vec3::Zero();
     for (Index i = 0; i < nv; ++i) {
         if (!turns(i)) continue;
         const Vec3 r = V.x[i] - o;
         const Vec3& n = normals[i];
         const double un = omega.cross(r).dot(n);
+        const double reach = (r - r.dot(swing.axis) * swing.axis).norm();
+        const double k =
+            perCoefficient * (swing.amplitude > 0.0
+                                  ? oscillatingPlateDrag(swing.amplitude * reach, swing.breadth)
+                                  : kPlateDragCoefficient);
         angularImpulse += V.m[i] * (un / (1.0 + dt * k * std::abs(un)) - un) * r.cross(n);
     }
     const Vec3 slowing = rotationFor(angularImpulse);

@@ -828,7 +828,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // Paper driven by pins that move (the Fold tool's carry, a hand, a scene's script)
     // turns as they take it.
     if (!aPinMoves(V, kNone))
-        dragTurningThroughAir(sheet, mat.arealDensity, params.dt, airNormals_);
+        dragTurningThroughAir(sheet, mat.arealDensity, g, params.dt, airNormals_);
     xPrev_.resize(static_cast<std::size_t>(nv));
     stepStart_ = V.x;
     const SphereTool& sp = contacts_.sphere;
