@@ -163,11 +163,10 @@ void dragTurningThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravit
         const Vec3 r = V.x[i] - o;
         const Vec3& n = normals[i];
         const double un = omega.cross(r).dot(n);
+        // (A sheet that does not swing has no amplitude and meets the steady drag.)
         const double reach = (r - r.dot(swing.axis) * swing.axis).norm();
         const double k =
-            perCoefficient * (swing.amplitude > 0.0
-                                  ? oscillatingPlateDrag(swing.amplitude * reach, swing.breadth)
-                                  : kPlateDragCoefficient);
+            perCoefficient * oscillatingPlateDrag(swing.amplitude * reach, swing.breadth);
         angularImpulse += V.m[i] * (un / (1.0 + dt * k * std::abs(un)) - un) * r.cross(n);
     }
     const Vec3 slowing = rotationFor(angularImpulse);
