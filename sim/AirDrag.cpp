@@ -92,6 +92,33 @@ Swing swingOf(const Vertices& V, const Turns& turns, const Pivot& pivot, const V
     return s;
 }
 
+// What is left of each vertex's velocity once the sheet's rigid motion (its drift and
+// its turning ω about o) is taken out, the sheet flapping, fluttering or twisting
+// between its pins, meets the air too, vertex by vertex along its normal, at the
+// steady plate's drag `k` per unit of u². Only what is left: neighbours across a crease
+// that move together move rigidly and are not pulled apart (the drag on whole
+// velocities along each normal stretched crumpled tissue 10.5 %). A free sheet's
+// centre of mass keeps its motion (`freeMass` > 0): the drag's net impulse is shared
+// back over the sheet, which leaves its turning about the centre of mass as it was.
+template <class Turns>
+void dragDeformingThroughAir(Vertices& V, const Turns& turns, const std::vector<Vec3>& normals,
+                             const Vec3& o, const Vec3& drift, const Vec3& omega, double k,
+                             double dt, double freeMass) {
+    Vec3 impulse = Vec3::Zero();
+    for (Index i = 0; i < V.size(); ++i) {
+        if (!turns(i)) continue;
+        const Vec3& n = normals[i];
+        const double u = (V.v[i] - drift - omega.cross(V.x[i] - o)).dot(n);
+        const double slowed = u / (1.0 + dt * k * std::abs(u)) - u;
+        V.v[i] += slowed * n;
+        impulse += V.m[i] * slowed * n;
+    }
+    if (!(freeMass > 0.0)) return;
+    const Vec3 back = impulse / freeMass;
+    for (Index i = 0; i < V.size(); ++i)
+        if (turns(i)) V.v[i] -= back;
+}
+
 } // namespace
 
 double oscillatingPlateDrag(double displacementAmplitude, double breadth) {
@@ -100,8 +127,8 @@ double oscillatingPlateDrag(double displacementAmplitude, double breadth) {
     return std::max(kPlateDragCoefficient, 8.0 / std::cbrt(kc));
 }
 
-void dragTurningThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravity, double dt,
-                           std::vector<Vec3>& normals) {
+void dragThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravity, double dt,
+                    std::vector<Vec3>& normals, bool toolDrivesTheShape) {
     auto& V = sheet.verts;
     const Index nv = V.size();
     if (!(arealDensity > 0.0) || !(dt > 0.0)) return;
@@ -145,8 +172,14 @@ void dragTurningThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravit
             return Vec3::Zero();
         return solve.solve(moment);
     };
-    const Vec3 omega = rotationFor(angular);
-    if (!omega.allFinite() || omega.isZero(0.0)) return;
+    Vec3 omega = rotationFor(angular);
+    if (!omega.allFinite()) omega = Vec3::Zero();
+    computeVertexNormals(sheet, normals);
+    const double perCoefficient = kAirDensity / (2.0 * arealDensity);
+    if (!toolDrivesTheShape)
+        dragDeformingThroughAir(V, turns, normals, o, drift, omega,
+                                perCoefficient * kPlateDragCoefficient, dt, free ? mass : 0.0);
+    if (omega.isZero(0.0)) return;
 
     // Each vertex's broadside speed in that rotation meets the drag of its own area of
     // paper; the torque of those drags slows the rotation as a whole. Taken as a rigid
@@ -154,9 +187,7 @@ void dragTurningThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravit
     // normals of crumpled paper, it pulled neighbours apart (tissue's crumple-cycles
     // reached 10.5 % stretch). A sheet swinging from its pins meets the drag of a plate
     // in oscillating flow, each vertex at the width of its own swing.
-    computeVertexNormals(sheet, normals);
     const Swing swing = swingOf(V, turns, pivot, omega, centre / mass, mass, inertia, gravity);
-    const double perCoefficient = kAirDensity / (2.0 * arealDensity);
     Vec3 angularImpulse = Vec3::Zero();
     for (Index i = 0; i < nv; ++i) {
         if (!turns(i)) continue;

@@ -826,12 +826,12 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     const Vec3 handVelocity = holding ? V.v[hand] : Vec3::Zero();
     if (holding) w_[hand] = 1.0 / V.m[hand];
     // Paper driven by pins that move (the Fold tool's carry, a hand, a scene's script)
-    // turns as they take it.
+    // turns as they take it; paper the tool presses is dented as the tool takes it.
+    const SphereTool& sp = contacts_.sphere;
     if (!aPinMoves(V, kNone))
-        dragTurningThroughAir(sheet, mat.arealDensity, g, params.dt, airNormals_);
+        dragThroughAir(sheet, mat.arealDensity, g, params.dt, airNormals_, sp.active);
     xPrev_.resize(static_cast<std::size_t>(nv));
     stepStart_ = V.x;
-    const SphereTool& sp = contacts_.sphere;
     const Vec3 sphereStart = sp.center - sp.velocity * params.dt;
 
     // Position-level Coulomb friction: the tangential slip of this sub-step is undone
@@ -1037,8 +1037,8 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         const Vec3 cPrev = c - sp.velocity * h;
         // Contacts with friction first, on the predicted motion, so that the stretch
         // pass after them is not undone by friction (that left 7 % stretch in press);
-        // then the desk and the tool once more without friction, the desk last, so
-        // that nothing ends a sub-step inside either.
+        // then the layers, the desk and the tool once more without friction, the desk
+        // last, so that nothing ends a sub-step inside either.
         std::fill(touched_.begin(), touched_.end(), std::uint8_t{0});
         collideSphere(c, cPrev, true);
         pullWithTool(c);
@@ -1055,6 +1055,10 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             const double len = d.norm();
             if (len > t.length) V.x[t.vertex] = V.x[t.pin] + d * (t.length / len);
         }
+        // The stretch pass and the tethers can pull a vertex back into the layer under
+        // it: a light corner of a layer landing on another ended its step 0.4 of the
+        // thickness into it once the air slowed the layer's flutter.
+        touchLayers(false);
         collideSphere(c, cPrev, false);
         collideGround(false);
         collideSphere(c, cPrev, false);

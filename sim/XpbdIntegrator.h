@@ -288,7 +288,7 @@ class XpbdIntegrator final : public Integrator {
     std::optional<Vec3> toolHeldAt_;    // where the last step stopped the tool
     std::vector<Vec3> stepStart_;       // positions before this step's sub-steps
     std::vector<double> w_;             // inverse masses, 0 for pinned vertices
-    std::vector<Vec3> airNormals_;      // dragTurningThroughAir's scratch
+    std::vector<Vec3> airNormals_;      // dragThroughAir's scratch
     std::vector<std::uint8_t> touched_; // touched by the tool in this sub-step
     std::vector<std::uint8_t> onDesk_;  // held up by the desk in this step
     std::vector<Index> toolTriangles_;  // triangles the tool may reach in this step

@@ -1,8 +1,9 @@
-// The air resists a sheet's turning (sim/AirDrag.h) and nothing else: a plate turning
-// broadside slows as quadratic drag says, a plate swinging from its edge meets the drag
-// of oscillating flow, a tumbling sheet still falls at exactly g with its momentum kept,
-// and a sheet hanging from two corners stops swinging within seconds (it swung for more
-// than a minute without air, docs/material.md).
+// The air resists a sheet's turning and flutter (sim/AirDrag.h) and nothing else: a
+// plate turning broadside slows as quadratic drag says, a plate swinging from its edge
+// meets the drag of oscillating flow, a tumbling sheet still falls at exactly g with
+// its momentum kept, a sheet hanging from two corners stops swinging within seconds (it
+// swung for more than a minute without air, docs/material.md), and one hung from a
+// corner onto the desk comes to rest.
 #include "AirDrag.h"
 #include "Material.h"
 #include "Scenes.h"
@@ -83,7 +84,7 @@ class TestAirDrag : public QObject {
                 sheet.verts.x[i] = turn * flat[i];
                 sheet.verts.v[i] = omega * Vec3::UnitX().cross(sheet.verts.x[i]);
             }
-            dragTurningThroughAir(sheet, office.arealDensity, Vec3(0.0, -9.81, 0.0), dt, normals);
+            dragThroughAir(sheet, office.arealDensity, Vec3(0.0, -9.81, 0.0), dt, normals, false);
             omega = spinAboutX(sheet.verts);
             angle += omega * dt;
         }
@@ -138,7 +139,7 @@ class TestAirDrag : public QObject {
                     V.x[i] = turn * hanging[i];
                     V.v[i] = V.pinned[i] ? Vec3::Zero() : Vec3(omega * Vec3::UnitX().cross(V.x[i]));
                 }
-                dragTurningThroughAir(sheet, office.arealDensity, Vec3(0.0, -g, 0.0), dt, normals);
+                dragThroughAir(sheet, office.arealDensity, Vec3(0.0, -g, 0.0), dt, normals, false);
                 double l = 0.0;
                 for (Index i = 0; i < V.size(); ++i)
                     if (!V.pinned[i]) l += V.m[i] * V.x[i].cross(V.v[i]).x();
@@ -219,17 +220,30 @@ class TestAirDrag : public QObject {
     // edge, it falls and swings about them. Falling from where it starts to where it
     // hangs releases m g Δh ≈ 7 mJ; without air it kept swinging with up to 2.5 mJ for
     // more than a minute (2.6 mJ of 5.5 mJ from 6 to 10 s). With steady drag alone the
-    // swing died down to a few millimetres that lingered, and the sheet fell asleep at
-    // 47 s; with the drag of oscillating flow it is asleep at 6 s. Real paper stops
-    // within a few swings.
+    // swing died down to a few millimetres that lingered, and office paper fell asleep at
+    // 47 s; with the drag of oscillating flow at 6 s. Tissue, whose lower part flutters
+    // and twists against its pinned edge more than it swings, slept at 18.3 s until the
+    // air met that flutter too (6.0 s). Real paper stops within a few swings.
+    void aHangingSheetsSwingDiesDownWithinSeconds_data() {
+        QTest::addColumn<QString>("paper");
+        QTest::addColumn<double>("asleepBefore");
+        QTest::newRow("office") << QStringLiteral("office") << 8.0;
+        QTest::newRow("tissue") << QStringLiteral("tissue") << 8.0;
+        QTest::newRow("card") << QStringLiteral("card") << 12.0;
+    }
     void aHangingSheetsSwingDiesDownWithinSeconds() {
+        QFETCH(QString, paper);
+        QFETCH(double, asleepBefore);
         World w = makeEditorScene("drape", {}, 0.02);
+        Material m;
+        QVERIFY(materialPreset(paper.toStdString(), m));
+        setMaterial(w, m);
         Simulation sim(std::move(w));
         sim.setThreads(1);
         const double dt = sim.world().params.dt;
         const double top = motionOf(sim.world().sheet.verts).centre.y();
         double late = 0.0, asleepFrom = -1.0;
-        for (int s = 0; s < static_cast<int>(10.0 / dt); ++s) {
+        for (int s = 0; s < static_cast<int>((asleepBefore + 2.0) / dt); ++s) {
             QCOMPARE(sim.step(), StepStatus::Ok);
             if (s * dt >= 6.0) late = std::max(late, motionOf(sim.world().sheet.verts).kinetic);
             if (!sim.asleep())
@@ -239,11 +253,59 @@ class TestAirDrag : public QObject {
         }
         const Motion end = motionOf(sim.world().sheet.verts);
         const double released = end.mass * sim.world().params.gravity * (top - end.centre.y());
-        qInfo("released by the fall %.2e J, largest kinetic energy from 6 to 10 s %.2e J, asleep "
-              "from %.2f s to the end (10 s)",
-              released, late, asleepFrom);
+        qInfo("released by the fall %.2e J, largest kinetic energy from 6 s on %.2e J, asleep "
+              "from %.2f s to the end (%.0f s)",
+              released, late, asleepFrom, asleepBefore + 2.0);
         QVERIFY2(late < 0.01 * released, qPrintable(QString::number(late)));
-        QVERIFY2(asleepFrom > 0.0 && asleepFrom < 8.0, qPrintable(QString::number(asleepFrom)));
+        QVERIFY2(asleepFrom > 0.0 && asleepFrom < asleepBefore,
+                 qPrintable(QString::number(asleepFrom)));
+    }
+
+    // The same sheet with one of its pins taken out swings down to hang from the other
+    // corner; its diagonal (36 cm) is longer than the pin is high (35 cm), so the far
+    // corner rests on the desk. With the air on its rigid turning only it then turned
+    // about the vertical for as long as it was left (office 0.13 rad/s), driven by the
+    // desk's friction on that corner as the bending solve kicked it; the air on the
+    // bowed sheet's flutter takes that energy, and it comes to rest. (Tissue still turns
+    // slowly: docs/material.md, "What is open".)
+    void aSheetHungFromOneCornerOntoTheDeskComesToRest_data() {
+        QTest::addColumn<QString>("paper");
+        QTest::newRow("office") << QStringLiteral("office");
+        QTest::newRow("card") << QStringLiteral("card");
+    }
+    void aSheetHungFromOneCornerOntoTheDeskComesToRest() {
+        QFETCH(QString, paper);
+        World w = makeEditorScene("drape", {}, 0.02);
+        Material m;
+        QVERIFY(materialPreset(paper.toStdString(), m));
+        setMaterial(w, m);
+        auto& V = w.sheet.verts;
+        Index kept = -1;
+        for (Index i = 0; i < V.size(); ++i)
+            if (V.pinned[i]) {
+                if (kept >= 0)
+                    V.pinned[i] = 0;
+                else
+                    kept = i;
+            }
+        QVERIFY(kept >= 0);
+        Simulation sim(std::move(w));
+        sim.setThreads(1);
+        const double dt = sim.world().params.dt;
+        double asleepFrom = -1.0, lowest = 1.0;
+        for (int s = 0; s < static_cast<int>(20.0 / dt); ++s) {
+            QCOMPARE(sim.step(), StepStatus::Ok);
+            if (!sim.asleep())
+                asleepFrom = -1.0;
+            else if (asleepFrom < 0.0)
+                asleepFrom = sim.world().time;
+        }
+        for (const Vec3& x : sim.world().sheet.verts.x) lowest = std::min(lowest, x.y());
+        qInfo("lowest vertex %.2f mm above the desk; asleep from %.2f s to the end (20 s)",
+              1e3 * lowest, asleepFrom);
+        // The premise: the far corner lies on the desk.
+        QVERIFY2(lowest < 1e-3, qPrintable(QString::number(lowest)));
+        QVERIFY2(asleepFrom > 0.0 && asleepFrom < 15.0, qPrintable(QString::number(asleepFrom)));
     }
 };
 

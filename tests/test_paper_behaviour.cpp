@@ -202,17 +202,20 @@ class TestPaperBehaviour : public QObject {
             return xpbd ? xpbd->projectionWork().newtonIterations : -1;
         };
         QVERIFY(work() >= 0); // the default integrator, xpbd
-        // The first second lifts (or swings); the second is measured.
+        // The hand's first second lifts, and its second is measured; the drape is
+        // measured from the let-go, as it swings wide (the air stills it within seconds).
+        const int measuredFrom = held == "hand" ? 60 : 0;
         double worst = 0.0;
-        std::int64_t before = 0;
+        std::int64_t before = work();
         constexpr int kFrames = 120, kStepsPerFrame = 4; // 2 s at 240 steps a second
         for (int frame = 0; frame < kFrames; ++frame) {
             if (held == "hand") s.grab(lifted, true, false);
             QCOMPARE(s.advance(kStepsPerFrame), StepStatus::Ok);
-            if (frame == kFrames / 2 - 1) before = work();
-            if (frame >= 60) worst = std::max(worst, computeStats(s.world().sheet).maxStretch);
+            if (frame == measuredFrom - 1) before = work();
+            if (frame >= measuredFrom)
+                worst = std::max(worst, computeStats(s.world().sheet).maxStretch);
         }
-        const double newton = double(work() - before) / (kFrames / 2 * kStepsPerFrame);
+        const double newton = double(work() - before) / ((kFrames - measuredFrom) * kStepsPerFrame);
         qInfo("per step: %.2f Newton iterations; largest stretch %.3f %%", newton, 100 * worst);
         QVERIFY2(worst <= 0.005, qPrintable(QString::number(worst)));
         // The sub-steps alone leave it stretched more than the projection allows.
