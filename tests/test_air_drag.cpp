@@ -266,8 +266,9 @@ class TestAirDrag : public QObject {
     // corner rests on the desk. With the air on its rigid turning only it then turned
     // about the vertical for as long as it was left (office 0.13 rad/s), driven by the
     // desk's friction on that corner as the bending solve kicked it; the air on the
-    // bowed sheet's flutter takes that energy, and it comes to rest. (Tissue still turns
-    // slowly: docs/material.md, "What is open".)
+    // bowed sheet's flutter takes that energy, and it comes to rest. (Tissue does not:
+    // it turns faster than before, 0.066 against 0.025 rad/s; docs/material.md, "What
+    // is open".)
     void aSheetHungFromOneCornerOntoTheDeskComesToRest_data() {
         QTest::addColumn<QString>("paper");
         QTest::newRow("office") << QStringLiteral("office");
