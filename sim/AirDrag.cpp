@@ -97,26 +97,33 @@ Swing swingOf(const Vertices& V, const Turns& turns, const Pivot& pivot, const V
 // between its pins, meets the air too, vertex by vertex along its normal, at the
 // steady plate's drag `k` per unit of u². Only what is left: neighbours across a crease
 // that move together move rigidly and are not pulled apart (the drag on whole
-// velocities along each normal stretched crumpled tissue 10.5 %). A free sheet's
-// centre of mass keeps its motion (`freeMass` > 0): the drag's net impulse is shared
-// back over the sheet, which leaves its turning about the centre of mass as it was.
-template <class Turns>
+// velocities along each normal stretched crumpled tissue 10.5 %). What that drag would
+// do to the rigid motion is taken back out of it: its net impulse on a free sheet
+// (`freeMass` > 0), so the centre of mass moves as without air, and its turn
+// (`rotationFor` of its angular impulse about o), which the drag on the rigid turn
+// deals with. So it only slows what is left, and takes energy without ever adding
+// any: the rigid motion and what is left are orthogonal in the kinetic energy, and the
+// drag only shrinks what is left before what is rigid in its change is removed.
+template <class Turns, class RotationFor>
 void dragDeformingThroughAir(Vertices& V, const Turns& turns, const std::vector<Vec3>& normals,
                              const Vec3& o, const Vec3& drift, const Vec3& omega, double k,
-                             double dt, double freeMass) {
-    Vec3 impulse = Vec3::Zero();
+                             double dt, double freeMass, const RotationFor& rotationFor) {
+    Vec3 impulse = Vec3::Zero(), angularImpulse = Vec3::Zero();
     for (Index i = 0; i < V.size(); ++i) {
         if (!turns(i)) continue;
         const Vec3& n = normals[i];
-        const double u = (V.v[i] - drift - omega.cross(V.x[i] - o)).dot(n);
-        const double slowed = u / (1.0 + dt * k * std::abs(u)) - u;
-        V.v[i] += slowed * n;
-        impulse += V.m[i] * slowed * n;
+        const Vec3 r = V.x[i] - o;
+        const double u = (V.v[i] - drift - omega.cross(r)).dot(n);
+        const Vec3 slowed = (u / (1.0 + dt * k * std::abs(u)) - u) * n;
+        V.v[i] += slowed;
+        impulse += V.m[i] * slowed;
+        angularImpulse += V.m[i] * r.cross(slowed);
     }
-    if (!(freeMass > 0.0)) return;
-    const Vec3 back = impulse / freeMass;
+    const Vec3 back = freeMass > 0.0 ? Vec3(impulse / freeMass) : Vec3::Zero();
+    Vec3 turnBack = rotationFor(angularImpulse);
+    if (!turnBack.allFinite()) turnBack = Vec3::Zero();
     for (Index i = 0; i < V.size(); ++i)
-        if (turns(i)) V.v[i] -= back;
+        if (turns(i)) V.v[i] -= back + turnBack.cross(V.x[i] - o);
 }
 
 } // namespace
@@ -128,7 +135,7 @@ double oscillatingPlateDrag(double displacementAmplitude, double breadth) {
 }
 
 void dragThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravity, double dt,
-                    std::vector<Vec3>& normals, bool toolDrivesTheShape) {
+                    std::vector<Vec3>& normals, bool toolPressed) {
     auto& V = sheet.verts;
     const Index nv = V.size();
     if (!(arealDensity > 0.0) || !(dt > 0.0)) return;
@@ -143,7 +150,7 @@ void dragThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravity, doub
         centre += V.m[i] * V.x[i];
         momentum += V.m[i] * V.v[i];
     }
-    if (!(mass > 0.0)) return;
+    if (!(mass > 0.0) || !momentum.allFinite()) return; // a blown-up step is not the air's
     const bool free = pivot.kind == Pivot::Kind::Free;
     // A free sheet turns about its centre of mass, which goes on as it was.
     const Vec3 drift = free ? Vec3(momentum / mass) : Vec3::Zero();
@@ -176,9 +183,10 @@ void dragThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravity, doub
     if (!omega.allFinite()) omega = Vec3::Zero();
     computeVertexNormals(sheet, normals);
     const double perCoefficient = kAirDensity / (2.0 * arealDensity);
-    if (!toolDrivesTheShape)
+    if (!toolPressed)
         dragDeformingThroughAir(V, turns, normals, o, drift, omega,
-                                perCoefficient * kPlateDragCoefficient, dt, free ? mass : 0.0);
+                                perCoefficient * kPlateDragCoefficient, dt, free ? mass : 0.0,
+                                rotationFor);
     if (omega.isZero(0.0)) return;
 
     // Each vertex's broadside speed in that rotation meets the drag of its own area of

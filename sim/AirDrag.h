@@ -23,11 +23,12 @@ namespace pf {
 //   nothing); pins that span a plane, or pins that move (a hand, the Fold tool, a
 //   scene's script), leave the turning to the paper;
 // - what is left of each vertex's velocity after the rigid motion: the sheet flapping,
-//   fluttering or twisting between its pins, vertex by vertex. On a free sheet the net
-//   impulse of that drag is shared back over the sheet, so its centre of mass moves
-//   exactly as without air. Tissue's lower part twisting against its pinned edge
-//   carried 77-88 % of its `drape`'s energy, which the rigid turn did not see: it
-//   slept at 18.3 s, office at 5.9; with this part 6.0 and 5.8.
+//   fluttering or twisting between its pins, vertex by vertex. What that drag would do
+//   to the rigid motion is taken back out (its net impulse on a free sheet, so the
+//   centre of mass moves exactly as without air, and its turn), so it slows only what
+//   is left and can never add energy. Tissue's lower part twisting against its pinned
+//   edge carried 77-88 % of its `drape`'s energy, which the rigid turn did not see: it
+//   slept at 18.3 s, office at 5.9; with this part 5.6 and 5.0.
 // The sheet's sliding in its own plane is left alone.
 //
 // A sheet swinging to and fro from its pins meets the air it stirred on the last
@@ -45,11 +46,13 @@ inline constexpr double kPlateDragCoefficient = 1.17; // flat plate, broadside
 // area, so the drag per mass is ρ C_d u² / (2 ρ_A); each vertex's drag over the step is
 // the exact solution of that, u / (1 + dt k |u|), so the change takes energy at any
 // step and never adds any. `gravity` is what a pinned sheet swings under; `normals` is
-// scratch space. Where the tool is in the scene (`toolDrivesTheShape`) its dent is not
-// a flutter: the second part is left out, and the tool's strokes (and the scorecard's
-// rows for them) are as they were measured.
+// scratch space. While the tool is pressed (`toolPressed`), the user is shaping the
+// paper and its dent is not a flutter: the second part is left out, and the tool's
+// strokes (and the scorecard's rows for them) are as they were measured. Paper held by
+// pins that span a plane (pinned at three or four corners) meets neither part: its
+// shape between them is the pins' (`crumple-cycles` gathers a sheet so).
 void dragThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravity, double dt,
-                    std::vector<Vec3>& normals, bool toolDrivesTheShape);
+                    std::vector<Vec3>& normals, bool toolPressed);
 
 // The drag coefficient of a flat plate of `breadth` moving to and fro broadside through
 // still air, `displacementAmplitude` either way. At a small swing the plate meets the

@@ -826,7 +826,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     const Vec3 handVelocity = holding ? V.v[hand] : Vec3::Zero();
     if (holding) w_[hand] = 1.0 / V.m[hand];
     // Paper driven by pins that move (the Fold tool's carry, a hand, a scene's script)
-    // turns as they take it; paper the tool presses is dented as the tool takes it.
+    // turns as they take it; while the tool is pressed, the paper's shape is the user's.
     const SphereTool& sp = contacts_.sphere;
     if (!aPinMoves(V, kNone))
         dragThroughAir(sheet, mat.arealDensity, g, params.dt, airNormals_, sp.active);
