@@ -197,8 +197,6 @@ std::optional<EditSession::StrokeEnd> EditSession::grab(const Vec3& target, bool
     c.pressed = held;
     record(std::move(c));
     const World& w = sim_.world();
-    grabTarget_ = target;
-    if (w.groundEnabled) grabTarget_.y() = std::max(grabTarget_.y(), w.groundHeight);
     // Only an explicit begin picks up: after an undo let go, moves of the hand that
     // still holds nothing must not pick up whatever is nearest.
     if (begin && held && !busy()) {
@@ -212,12 +210,18 @@ std::optional<EditSession::StrokeEnd> EditSession::grab(const Vec3& target, bool
             }
         }
         if (grabbing()) {
+            // The hand holds the paper where it took it: the vertex keeps its offset from
+            // the cursor. Drawn onto the cursor instead, a vertex picked up a few
+            // millimetres away was yanked across the sheet and tore it at once.
+            grabOffset_ = V.x[grabbed_] - target;
             beginStroke();
             setPins({grabbed_}, true);
             sim_.setHeldVertex(grabbed_);
         }
-        return std::nullopt;
     }
+    grabTarget_ = target + grabOffset_;
+    if (w.groundEnabled) grabTarget_.y() = std::max(grabTarget_.y(), w.groundHeight);
+    if (begin && held) return std::nullopt;
     if (held || !grabbing()) return std::nullopt;
     releaseGrab();
     return endStroke(StrokeKind::Grab);
@@ -227,6 +231,7 @@ void EditSession::releaseGrab() {
     if (!grabbing()) return;
     setPins({grabbed_}, false); // it keeps its velocity: a throw
     grabbed_ = kNone;
+    grabOffset_ = Vec3::Zero();
     sim_.setHeldVertex(kNone);
 }
 

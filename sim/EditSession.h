@@ -350,6 +350,7 @@ class EditSession {
     bool pressed_ = false;
     Index grabbed_ = kNone;
     Vec3 grabTarget_ = Vec3::Zero();
+    Vec3 grabOffset_ = Vec3::Zero(); // from the cursor to the vertex it picked up
     Index strokeStart_ = 0;
     std::vector<Stroke> strokes_;
     int sheet_ = 0;         // which sheet is in place: 0 the first, each Reset a new one

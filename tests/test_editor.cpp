@@ -2404,8 +2404,9 @@ class TestEditor : public QObject {
         }
         for (int s = 0; s < 240; ++s) window->simulation()->stepOnce();
         auto held = worldOf(*window);
-        // The vertex picked up is the one nearest the picked point; a copy to save does
-        // not keep it pinned (the hand holds it).
+        // The vertex picked up is the one nearest the picked point, and it keeps its
+        // offset from the cursor; a copy to save does not keep it pinned (the hand holds
+        // it).
         Index grabbed = 0;
         for (Index i = 0; i < before->sheet.verts.size(); ++i)
             if ((before->sheet.verts.x[i] - hit->point).norm() <
@@ -2413,11 +2414,12 @@ class TestEditor : public QObject {
                 grabbed = i;
         QCOMPARE(std::count(held->sheet.verts.pinned.begin(), held->sheet.verts.pinned.end(), 1),
                  std::ptrdiff_t(0));
+        const Vec3 offset = before->sheet.verts.x[grabbed] - hit->point;
         auto onCursor = [&](const Vec3& x, double wantDepth) {
             const auto ray =
                 cam.rayThroughPixel(p.x() + 0.5, p.y() + 0.5, view->width(), view->height());
-            const double offRay = (x - ray.origin).cross(ray.direction).norm();
-            const double atDepth = (x - cam.eye()).dot(facing);
+            const double offRay = (x - offset - ray.origin).cross(ray.direction).norm();
+            const double atDepth = (x - offset - cam.eye()).dot(facing);
             qInfo("grabbed vertex: %.2e m off the cursor's ray, depth %.4f m (want %.4f)", offRay,
                   atDepth, wantDepth);
             return offRay < 1e-3 && std::abs(atDepth - wantDepth) < 1e-3;
