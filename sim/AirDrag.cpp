@@ -181,6 +181,7 @@ void dragThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravity, doub
     };
     Vec3 omega = rotationFor(angular);
     if (!omega.allFinite()) omega = Vec3::Zero();
+    if (toolPressed && omega.isZero(0.0)) return; // no flutter drag and no turn to slow
     computeVertexNormals(sheet, normals);
     const double perCoefficient = kAirDensity / (2.0 * arealDensity);
     if (!toolPressed)

@@ -13,6 +13,7 @@
 #include <QTest>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 
 using namespace pf;
@@ -60,6 +61,30 @@ Sheet officePlate(int columns) {
     spec.density = Material{}.arealDensity;
     return buildRectangleSheet(spec);
 }
+
+// The editor's `drape` (a sheet hanging from two corners) of one of the papers.
+std::optional<World> drapeOf(const QString& paper) {
+    World w = makeEditorScene("drape", {}, 0.02);
+    Material m;
+    if (!materialPreset(paper.toStdString(), m)) return std::nullopt;
+    setMaterial(w, m);
+    return w;
+}
+
+// When the sheet last fell asleep and stayed so, or -1 while it is awake.
+class AsleepSince {
+  public:
+    void after(const Simulation& sim) {
+        if (!sim.asleep())
+            since_ = -1.0;
+        else if (since_ < 0.0)
+            since_ = sim.world().time;
+    }
+    double since() const { return since_; }
+
+  private:
+    double since_ = -1.0;
+};
 
 } // namespace
 
@@ -331,23 +356,20 @@ class TestAirDrag : public QObject {
     void aHangingSheetsSwingDiesDownWithinSeconds() {
         QFETCH(QString, paper);
         QFETCH(double, asleepBefore);
-        World w = makeEditorScene("drape", {}, 0.02);
-        Material m;
-        QVERIFY(materialPreset(paper.toStdString(), m));
-        setMaterial(w, m);
-        Simulation sim(std::move(w));
+        std::optional<World> w = drapeOf(paper);
+        QVERIFY(w);
+        Simulation sim(std::move(*w));
         sim.setThreads(1);
         const double dt = sim.world().params.dt;
         const double top = motionOf(sim.world().sheet.verts).centre.y();
-        double late = 0.0, asleepFrom = -1.0;
+        double late = 0.0;
+        AsleepSince asleep;
         for (int s = 0; s < static_cast<int>((asleepBefore + 2.0) / dt); ++s) {
             QCOMPARE(sim.step(), StepStatus::Ok);
             if (s * dt >= 6.0) late = std::max(late, motionOf(sim.world().sheet.verts).kinetic);
-            if (!sim.asleep())
-                asleepFrom = -1.0;
-            else if (asleepFrom < 0.0)
-                asleepFrom = sim.world().time;
+            asleep.after(sim);
         }
+        const double asleepFrom = asleep.since();
         const Motion end = motionOf(sim.world().sheet.verts);
         const double released = end.mass * sim.world().params.gravity * (top - end.centre.y());
         qInfo("released by the fall %.2e J, largest kinetic energy from 6 s on %.2e J, asleep "
@@ -373,11 +395,9 @@ class TestAirDrag : public QObject {
     }
     void aSheetHungFromOneCornerOntoTheDeskComesToRest() {
         QFETCH(QString, paper);
-        World w = makeEditorScene("drape", {}, 0.02);
-        Material m;
-        QVERIFY(materialPreset(paper.toStdString(), m));
-        setMaterial(w, m);
-        auto& V = w.sheet.verts;
+        std::optional<World> w = drapeOf(paper);
+        QVERIFY(w);
+        auto& V = w->sheet.verts;
         Index kept = -1;
         for (Index i = 0; i < V.size(); ++i)
             if (V.pinned[i]) {
@@ -387,17 +407,16 @@ class TestAirDrag : public QObject {
                     kept = i;
             }
         QVERIFY(kept >= 0);
-        Simulation sim(std::move(w));
+        Simulation sim(std::move(*w));
         sim.setThreads(1);
         const double dt = sim.world().params.dt;
-        double asleepFrom = -1.0, lowest = 1.0;
+        AsleepSince asleep;
         for (int s = 0; s < static_cast<int>(20.0 / dt); ++s) {
             QCOMPARE(sim.step(), StepStatus::Ok);
-            if (!sim.asleep())
-                asleepFrom = -1.0;
-            else if (asleepFrom < 0.0)
-                asleepFrom = sim.world().time;
+            asleep.after(sim);
         }
+        const double asleepFrom = asleep.since();
+        double lowest = 1.0;
         for (const Vec3& x : sim.world().sheet.verts.x) lowest = std::min(lowest, x.y());
         qInfo("lowest vertex %.2f mm above the desk; asleep from %.2f s to the end (20 s)",
               1e3 * lowest, asleepFrom);
