@@ -8,6 +8,23 @@
 
 namespace pf {
 
+std::optional<Index> pinMarkOnRay(const SheetSnapshot& snapshot, const OrbitCamera::Ray& ray,
+                                  double spread) {
+    std::optional<Index> found;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (Index i : snapshot.pinned) {
+        if (i < 0 || static_cast<std::size_t>(i) >= snapshot.x.size()) continue;
+        const Vec3 d = snapshot.x[static_cast<std::size_t>(i)] - ray.origin;
+        const double along = d.dot(ray.direction);
+        if (!(along > 0.0) || !(along < nearest)) continue;
+        if ((d - along * ray.direction).norm() <= kPinMarkArm + spread * along) {
+            nearest = along;
+            found = i;
+        }
+    }
+    return found;
+}
+
 std::optional<PickHit> pickSheet(const SheetSnapshot& snapshot, const OrbitCamera::Ray& ray) {
     std::optional<PickHit> best;
     const auto& x = snapshot.x;

@@ -18,6 +18,16 @@ struct PickHit {
 // plane; nullopt if it meets neither.
 std::optional<PickHit> pickSheet(const SheetSnapshot& snapshot, const OrbitCamera::Ray& ray);
 
+// Half the length of each arm of the cross that marks a pin (m).
+inline constexpr double kPinMarkArm = 0.003;
+
+// The pinned vertex whose mark the ray passes through, or passes within `spread` radians
+// of as seen from the eye, nearest the eye; none if it passes none. A pin at the paper's
+// corner or edge has half its mark beyond the paper, where the ray meets only the desk
+// or the sky: a click there, on the red cross, did nothing.
+std::optional<Index> pinMarkOnRay(const SheetSnapshot& snapshot, const OrbitCamera::Ray& ray,
+                                  double spread);
+
 // Where the tool's centre goes for a pick: resting on the surface along the normal,
 // or pushed `depth` into it.
 Vec3 toolCenter(const PickHit& hit, double radius, double depth);

@@ -1,6 +1,7 @@
 #include "SheetRenderer.h"
 
 #include "HeatColor.h"
+#include "Picking.h"
 #include "Subdivision.h"
 
 #include <QFile>
@@ -313,10 +314,9 @@ void SheetRenderer::buildLines(const SheetSnapshot& snap, const RenderOptions& o
     // A small three-axis cross on each pin, in the pin's red, and on each vertex a hand
     // holds for a while (a fold's carry) in blue.
     const auto crosses = [&](const std::vector<Index>& vertices, const float(&c)[4]) {
-        const double arm = 0.003; // m
         for (Index i : vertices)
             for (int axis = 0; axis < 3; ++axis) {
-                const Vec3 d = arm * Vec3::Unit(axis);
+                const Vec3 d = kPinMarkArm * Vec3::Unit(axis);
                 pushLine(lineData_, x[i] - d, x[i] + d, c);
             }
     };

@@ -2518,6 +2518,57 @@ class TestEditor : public QObject {
     // Tools ▸ Pin: a click pins the paper around the point, which then stands still
     // while the rest falls; a second click frees it; each is an undo step; pins are
     // saved and replay.
+    // A pin's red cross stands half beyond the paper at a corner: a click on it there,
+    // where the cursor's ray meets no paper, frees that pin (it did nothing, and said
+    // nothing). The other pin holds.
+    void aClickOnAPinsMarkBeyondThePaperFreesIt() {
+        window->newScene(QStringLiteral("drape"));
+        window->simulation()->sync();
+        QTRY_VERIFY(window->viewport()->snapshot() &&
+                    window->viewport()->snapshot()->x == worldOf(*window)->sheet.verts.x);
+        Viewport* view = window->viewport();
+        window->action("tool.pin")->trigger();
+        const auto start = worldOf(*window);
+        const auto& V = start->sheet.verts;
+        const auto pinCount = [this] {
+            const auto w = worldOf(*window);
+            return std::count(w->sheet.verts.pinned.begin(), w->sheet.verts.pinned.end(), 1);
+        };
+        const std::ptrdiff_t before = pinCount();
+        QVERIFY(before >= 2);
+        Index pin = 0;
+        while (!V.pinned[pin]) ++pin;
+        // The pixel of the pin, then a pixel beside it off the paper, on its mark.
+        const OrbitCamera& c = view->camera();
+        const Eigen::Vector4d clip = c.projection(double(view->width()) / view->height()) *
+                                     c.view() * V.x[pin].homogeneous();
+        const QPoint at(int((clip.x() / clip.w() + 1.0) / 2.0 * view->width()),
+                        int((1.0 - clip.y() / clip.w()) / 2.0 * view->height()));
+        std::optional<QPoint> off;
+        for (int r = 1; r <= 3 && !off; ++r)
+            for (const QPoint d : {QPoint(-r, 0), QPoint(r, 0), QPoint(0, -r), QPoint(0, r),
+                                   QPoint(-r, -r), QPoint(r, -r), QPoint(-r, r), QPoint(r, r)}) {
+                const auto hit = pickAt(*window, at + d);
+                if (!hit || !hit->onSheet) {
+                    off = at + d;
+                    break;
+                }
+            }
+        QVERIFY2(off, "every pixel round the pin is on the paper");
+        QueuedSignalSpy recorded(window->simulation(), &SimulationThread::strokeRecorded);
+        QTest::mouseClick(view, Qt::LeftButton, {}, *off);
+        QVERIFY(waitForCount(recorded, 1));
+        QTRY_COMPARE(window->undoStack()->count(), 1);
+        QVERIFY(window->undoStack()->undoText().startsWith(QStringLiteral("Unpin")));
+        const auto after = worldOf(*window);
+        QVERIFY(!after->sheet.verts.pinned[pin]);
+        QVERIFY(pinCount() > 0 && pinCount() < before); // the other corner's pin holds
+        // Far from any pin, off the paper, a click does nothing.
+        QTest::mouseClick(view, Qt::LeftButton, {}, QPoint(3, 3));
+        window->simulation()->sync();
+        QCOMPARE(window->undoStack()->count(), 1);
+    }
+
     void pinHoldsThePaperAndIsSaved() {
         newDropShown(true);
         if (QTest::currentTestFailed()) return;

@@ -166,8 +166,19 @@ void ViewportInput::usePin(const QPoint& pixel, bool pressed) {
     pinHeld_ = pressed;
     if (!click) return;
     const auto hit = pick(pixel);
-    if (!hit || !hit->onSheet) return;
-    sim_->pin(hit->point, kPinShare * toolRadius_);
+    std::optional<Vec3> at;
+    if (hit && hit->onSheet) {
+        at = hit->point;
+    } else if (const SheetSnapshot* snap = viewport_->snapshot()) {
+        // Off the paper, on a pin's mark: the pin.
+        const double spread = std::acos(std::clamp(
+            rayAt(pixel).direction.dot(rayAt(pixel + QPoint(kPinMarkPixels, 0)).direction), -1.0,
+            1.0));
+        if (const auto pin = pinMarkOnRay(*snap, rayAt(pixel), spread))
+            at = snap->x[static_cast<std::size_t>(*pin)];
+    }
+    if (!at) return;
+    sim_->pin(*at, kPinShare * toolRadius_);
     emit strokeBegan();
 }
 

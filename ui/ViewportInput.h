@@ -50,6 +50,8 @@ class ViewportInput : public QObject {
     static constexpr double kDefaultToolRadius = 0.03; // m
     // A pin click toggles the vertices within this share of the tool's radius.
     static constexpr double kPinShare = 0.5;
+    // A pin click off the paper frees a pin whose mark it is this near (pixels).
+    static constexpr int kPinMarkPixels = 4;
     // How far one wheel notch moves a grabbed point toward or away from the eye.
     static constexpr double kGrabWheelStep = 0.01; // m
 
