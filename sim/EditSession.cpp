@@ -252,7 +252,7 @@ World EditSession::worldToSave() const {
 void EditSession::pullGrabbed() {
     if (!grabbing()) return;
     auto& V = sim_.world().sheet.verts;
-    V.v[grabbed_] = boundedMove(V.x[grabbed_], grabTarget_) / sim_.world().params.dt;
+    V.v[grabbed_] = boundedMove(V.x[grabbed_], grabTarget_, kMaxHandSpeed) / sim_.world().params.dt;
 }
 
 void EditSession::setPins(const std::vector<Index>& vertices, bool pinned) {
@@ -445,9 +445,9 @@ void EditSession::closeStroke(Stroke& stroke) {
     stroke.after = look();
 }
 
-Vec3 EditSession::boundedMove(const Vec3& from, const Vec3& to) const {
+Vec3 EditSession::boundedMove(const Vec3& from, const Vec3& to, double speed) const {
     Vec3 move = to - from;
-    const double limit = kMaxToolSpeed * sim_.world().params.dt;
+    const double limit = speed * sim_.world().params.dt;
     if (move.norm() > limit) move *= limit / move.norm();
     return move;
 }

@@ -79,6 +79,11 @@ class EditSession {
     // The tool follows its target no faster than this: a jump of the cursor across the
     // sheet must not teleport the tool through the paper.
     static constexpr double kMaxToolSpeed = 1.5; // m/s
+    // A hand that holds paper (a grab) moves it no faster than this. At the tool's speed a
+    // wheel notch (1 cm toward the eye) jerked a sheet lying on the desk by its corner,
+    // and the sheet slid on past the hand and buckled against it: three notches made a
+    // break and three hinges; at this speed, none.
+    static constexpr double kMaxHandSpeed = 0.5; // m/s
 
     Simulation& simulation() { return sim_; }
     const Simulation& simulation() const { return sim_; }
@@ -110,7 +115,7 @@ class EditSession {
     static constexpr std::size_t kMaxDamageEvents = 8'000'000;
 
     // Grab: `begin` picks up the free vertex nearest to `target`; while `held` it
-    // follows `target` (no faster than kMaxToolSpeed, never below the ground), pinned for
+    // follows `target` (no faster than kMaxHandSpeed, never below the ground), pinned for
     // the solver, so the sheet hangs from it; on release it is let go with its velocity
     // and falls. A grab is a stroke like a push. Refused while the push tool is pressed;
     // a pinned vertex is not grabbed (the pin holds).
@@ -328,8 +333,8 @@ class EditSession {
     bool redoWaiting() const;
     // Fills in `stroke`'s start (from beginStroke) and its sheet before and after.
     void closeStroke(Stroke& stroke);
-    // The way from `from` toward `to` that one step allows at kMaxToolSpeed.
-    Vec3 boundedMove(const Vec3& from, const Vec3& to) const;
+    // The way from `from` toward `to` that one step allows at `speed`.
+    Vec3 boundedMove(const Vec3& from, const Vec3& to, double speed = kMaxToolSpeed) const;
     // Lets a grabbed vertex go; no undo step.
     void releaseGrab();
     void setPins(const std::vector<Index>& vertices, bool pinned);

@@ -16,6 +16,7 @@
 #include <QTest>
 #include <QtEndian>
 #include <limits>
+#include <numbers>
 #include <random>
 
 using namespace pf;
@@ -1184,6 +1185,47 @@ class TestEditSession : public QObject {
         const double miss = (V.x[held] - (start + lift)).norm();
         QVERIFY2(miss < 1e-3, qPrintable(QString::number(miss)));
         QCOMPARE(V.size(), verticesBefore);
+    }
+
+    // Three wheel notches while the hand holds a corner of the sheet lying on the desk:
+    // each moves the hand's target a centimetre toward the eye (the editor's view, 35°
+    // above the desk, beyond that corner). The hand follows at kMaxHandSpeed: at the
+    // tool's 1.5 m/s the sheet was jerked, slid on past the hand and buckled against it
+    // (a break and three hinges).
+    void wheelNotchesLiftPaperWithoutBucklingIt() {
+        SceneOptions options; // xpbd's sub-steps are slow under the sanitizers
+        if (PAPERFOLD_TEST_SLOWDOWN > 1) options.resolution = 9;
+        EditSession session(makeEditorScene("press", options, 0.03));
+        QCOMPARE(session.advance(120), StepStatus::Ok);
+        const auto& V = session.world().sheet.verts;
+        Index corner = 0;
+        for (Index i = 1; i < V.size(); ++i)
+            if (V.x[i].x() + V.x[i].z() < V.x[corner].x() + V.x[corner].z()) corner = i;
+        const Vec3 picked = V.x[corner] + Vec3(0.01, 0.0, 0.01);
+        QVERIFY(!session.grab(picked, true, true));
+        const Index held = session.grabbedVertex();
+        const double elevation = 35.0 * std::numbers::pi / 180.0;
+        const Vec3 towardTheEye = Vec3(-std::cos(elevation) / std::sqrt(2.0), std::sin(elevation),
+                                       -std::cos(elevation) / std::sqrt(2.0));
+        const double dt = session.world().params.dt;
+        const SheetStats before = computeStats(session.world().sheet);
+        Vec3 target = picked;
+        double fastest = 0.0;
+        for (int k = 0; k < 360; ++k) {
+            if (k % 72 == 0 && k < 216) target += 0.01 * towardTheEye; // a notch
+            session.grab(target, true, false);
+            const Vec3 from = V.x[held];
+            QCOMPARE(session.advance(1), StepStatus::Ok);
+            fastest = std::max(fastest, (V.x[held] - from).norm() / dt);
+        }
+        const SheetStats after = computeStats(session.world().sheet);
+        qInfo("the hand moved at most %.2f m/s; %d breaks, %d hinges", fastest,
+              after.breaks - before.breaks, after.hinges - before.hinges);
+        QVERIFY(fastest <= EditSession::kMaxHandSpeed * (1.0 + 1e-9));
+        QCOMPARE(after.breaks, before.breaks);
+        QCOMPARE(after.hinges, before.hinges);
+        // It was lifted: three centimetres toward the eye, 1.7 cm up.
+        QVERIFY2(V.x[held].y() > 0.015, qPrintable(QString::number(V.x[held].y())));
     }
 
     // The hand holds paper by a pinch (kHandForce), and the long-range tethers tie the
