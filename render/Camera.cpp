@@ -23,10 +23,13 @@ Vec3 OrbitCamera::eye() const {
 Mat4 OrbitCamera::view() const {
     const Vec3 e = eye();
     const Vec3 f = (target - e).normalized();
-    // Straight down the y axis the usual up vector is degenerate; use -z instead.
-    const Vec3 upHint = std::abs(f.y()) > 0.999 ? Vec3(0, 0, -1) : Vec3::UnitY();
-    const Vec3 s = f.cross(upHint).normalized();
-    const Vec3 u = s.cross(f);
+    // The screen's right is the horizontal that yaw turns (what f × y gives wherever that
+    // is defined), taken from yaw itself: near the pole f × y vanishes, and a fixed
+    // stand-in for it there left the view from above deaf to yaw (a user's horizontal
+    // drag did nothing at pitch 89.9).
+    const double y = radians(yaw);
+    const Vec3 s(std::cos(y), 0.0, -std::sin(y));
+    const Vec3 u = s.cross(f).normalized();
     Mat4 m = Mat4::Identity();
     m.block<1, 3>(0, 0) = s.transpose();
     m.block<1, 3>(1, 0) = u.transpose();

@@ -2064,6 +2064,41 @@ class TestEditor : public QObject {
                  qPrintable(QString::number(view->camera().eye().y() - desk)));
     }
 
+    // Seen from straight above (View ▸ Top), a sideways drag with the right button turns
+    // the view about the vertical as it does from anywhere else: the view ignored yaw
+    // there, and a user's horizontal drag did nothing.
+    void anOrbitTurnsTheViewFromStraightAbove() {
+        Viewport* view = window->viewport();
+        QTRY_VERIFY(view->snapshot());
+        window->action("view.top")->trigger();
+        QCOMPARE(view->camera().pitch, 89.9);
+        const Vec3 corner = view->snapshot()->x.front();
+        const auto onScreen = [view](const Vec3& at) {
+            const OrbitCamera& c = view->camera();
+            const Eigen::Vector4d clip = c.projection(double(view->width()) / view->height()) *
+                                         c.view() * Eigen::Vector4d(at.x(), at.y(), at.z(), 1.0);
+            return Vec2(clip.x() / clip.w() * view->width() / 2.0,
+                        clip.y() / clip.w() * view->height() / 2.0);
+        };
+        const Vec2 centre = onScreen(view->camera().target);
+        const Vec2 before = onScreen(corner) - centre;
+        const double yawBefore = view->camera().yaw;
+        QTest::mousePress(view, Qt::RightButton, {}, QPoint(200, 200));
+        for (int k = 1; k <= 10; ++k) moveMouse(view, QPoint(200 + 15 * k, 200), Qt::RightButton);
+        QTest::mouseRelease(view, Qt::RightButton, {}, QPoint(350, 200));
+        // 150 px at 0.4° a pixel: the corner turns 60° about the middle of the view, on a
+        // circle of the same radius, and the view still looks straight down.
+        QCOMPARE(view->camera().pitch, 89.9);
+        QVERIFY(std::abs(std::remainder(view->camera().yaw - yawBefore, 360.0) + 60.0) < 1e-6);
+        const Vec2 after = onScreen(corner) - centre;
+        const double turned =
+            std::atan2(before.x() * after.y() - before.y() * after.x(), before.dot(after));
+        QVERIFY2(std::abs(std::abs(turned) - std::numbers::pi / 3.0) < 0.02,
+                 qPrintable(QStringLiteral("turned %1 rad").arg(turned)));
+        QVERIFY(std::abs(after.norm() - before.norm()) < 0.01 * before.norm());
+        window->action("view.iso")->trigger();
+    }
+
     // A small window: the docks scroll instead of spilling over the status bar or being
     // cut off (a user's Solver dock, at 800 × 600, drew its Stretch row over the status
     // bar, and its Breaks row and chart button were out of reach). Where the window has
@@ -2481,8 +2516,19 @@ class TestEditor : public QObject {
         const auto framed = [&](const Vec3& at) {
             return (window->viewport()->camera().target - at).norm() < 0.05;
         };
+        // Whatever way the old sheet was seen from, the new one comes up seen as the editor
+        // starts (a user's New stayed in their view from straight above).
+        const OrbitCamera start;
+        const auto startsSeen = [&] {
+            const OrbitCamera& c = window->viewport()->camera();
+            return c.yaw == start.yaw && c.pitch == start.pitch;
+        };
+        window->action("view.top")->trigger();
+        QVERIFY(!startsSeen());
         QVERIFY(window->openFile(path));
         QTRY_VERIFY(framed(middle(far.sheet.verts.x)));
+        QVERIFY(startsSeen());
+        window->action("view.front")->trigger();
         // Playing, as the user's was: the far sheet's snapshots keep coming.
         window->simulation()->setPlaying(true);
         QTest::qWait(100);
@@ -2491,6 +2537,7 @@ class TestEditor : public QObject {
         const Vec3 fresh = middle(worldOf(*window)->sheet.verts.x);
         QVERIFY((fresh - middle(far.sheet.verts.x)).norm() > 2.0);
         QTRY_VERIFY(framed(fresh));
+        QVERIFY(startsSeen());
         // And it stays framed: no late snapshot of the far sheet moves the view away.
         QTest::qWait(200);
         QVERIFY(framed(fresh));

@@ -142,7 +142,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         // queued, and leave the new one out of view.
         if (auto snap = sim_->latestSnapshot()) viewport_->setSnapshot(snap);
         firstSnapshot_ = false;
-        input_->fitCamera();
+        input_->frameNewSheet();
     });
     connect(viewport_, &Viewport::frameDrawn, readout_, &StatusReadout::frameDrawn);
     connect(viewport_, &Viewport::frameDrawn, this, [this] {

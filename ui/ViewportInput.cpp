@@ -81,6 +81,15 @@ void ViewportInput::fitCamera() {
     toolFollowsTheView();
 }
 
+void ViewportInput::frameNewSheet() {
+    const OrbitCamera start;
+    OrbitCamera c = viewport_->camera();
+    c.yaw = start.yaw;
+    c.pitch = start.pitch;
+    viewport_->setCamera(c);
+    fitCamera();
+}
+
 void ViewportInput::setView(const char* name) {
     OrbitCamera c = namedView(name).value();
     const OrbitCamera& now = viewport_->camera();

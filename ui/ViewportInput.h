@@ -63,6 +63,9 @@ class ViewportInput : public QObject {
     // Fits the sheet into view, keeping the direction; sets a named view (top, front,
     // iso), keeping the target and distance.
     void fitCamera();
+    // Fits a sheet that New or Open brought, seen from the direction the editor starts
+    // with: the old sheet's orbit (a user's view from straight above) stood over it.
+    void frameNewSheet();
     void setView(const char* name);
 
   signals:
