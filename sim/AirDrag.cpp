@@ -1,6 +1,7 @@
 #include "AirDrag.h"
 
 #include "Normals.h"
+#include "PinPivot.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -11,45 +12,6 @@
 namespace pf {
 
 namespace {
-
-// How pins let the sheet turn as a rigid body: about its centre of mass when nothing
-// holds it, about a pin (or pins at one point) in any direction, about the line
-// through pins in a row; pins that span a plane hold it from turning at all.
-struct Pivot {
-    enum class Kind { Free, Point, Axis, Held } kind = Kind::Free;
-    Vec3 point = Vec3::Zero();
-    Vec3 axis = Vec3::Zero(); // unit, for Kind::Axis
-};
-
-constexpr double kPinsApart = 1e-6; // m: pins closer than this hold one point or line
-
-Pivot pivotOf(const Vertices& V) {
-    const Index nv = V.size();
-    Index first = 0;
-    while (first < nv && !V.pinned[first]) ++first;
-    Pivot p;
-    if (first == nv) return p;
-    p.kind = Pivot::Kind::Point;
-    p.point = V.x[first];
-    Index far = first;
-    for (Index i = first; i < nv; ++i)
-        if (V.pinned[i] && (V.x[i] - p.point).squaredNorm() > (V.x[far] - p.point).squaredNorm())
-            far = i;
-    const Vec3 span = V.x[far] - p.point;
-    if (!(span.norm() > kPinsApart)) return p;
-    const Vec3 axis = span.normalized();
-    for (Index i = first; i < nv; ++i) {
-        if (!V.pinned[i]) continue;
-        const Vec3 d = V.x[i] - p.point;
-        if ((d - d.dot(axis) * axis).norm() > kPinsApart) {
-            p.kind = Pivot::Kind::Held;
-            return p;
-        }
-    }
-    p.kind = Pivot::Kind::Axis;
-    p.axis = axis;
-    return p;
-}
 
 // A sheet that turns about its pins as a pendulum swings to and fro through the same
 // air: how far it swings (an angle, from hanging), about which axis, and how wide it

@@ -102,4 +102,55 @@ bool holdOnDesk(Vertices& V, const std::vector<Vec3>& stepStart,
     return true;
 }
 
+bool holdTurnOnDesk(Vertices& V, const Vec3& pin, const std::vector<Vec3>& stepStart,
+                    const std::vector<double>& deskImpulse, const DeskHoldScene& scene,
+                    double& turnRate) {
+    // A tilted desk pulls the sheet around the pin; the rule is for a level one.
+    const bool level = scene.gravity.x() == 0.0 && scene.gravity.z() == 0.0;
+    double mass = 0.0, rise = 0.0, inertia = 0.0, turning = 0.0, holding = 0.0;
+    for (Index i = 0; i < V.size(); ++i) {
+        if (V.pinned[i]) continue;
+        Vec3 arm = stepStart[i] - pin;
+        arm.y() = 0.0;
+        const Vec3 d = V.x[i] - stepStart[i];
+        mass += V.m[i];
+        rise += V.m[i] * d.y();
+        inertia += V.m[i] * arm.squaredNorm();
+        turning += V.m[i] * (arm.z() * d.x() - arm.x() * d.z());
+        holding += deskImpulse[i] * arm.norm();
+    }
+    if (!level || !(scene.dt > 0.0) || !(holding > 0.0) || !(inertia > 0.0)) {
+        turnRate = kSlideUnknown;
+        return false;
+    }
+    // As for a sheet free on the desk: while it rises or falls as a whole, it is landing
+    // or swinging, and the sub-steps' own friction decides.
+    const double pressing = -scene.gravity.y();
+    if (!(std::abs(rise / mass) <= scene.kineticFriction * pressing * scene.dt * scene.dt)) {
+        turnRate = kSlideUnknown;
+        return false;
+    }
+    const double theta = turning / inertia; // over the step
+    const double rate = std::abs(theta) / scene.dt;
+    const double slowing = scene.kineticFriction * holding / (inertia * scene.dt); // rad/s²
+    const double allowed = turnRate < 0.0 ? rate : std::max(0.0, turnRate - slowing * scene.dt);
+    if (rate <= allowed) {
+        turnRate = rate;
+        return false;
+    }
+    // Turned back exactly (not by the fit's small-angle move), so that no edge to the
+    // pin stretches.
+    const double back = -(1.0 - allowed / rate) * theta;
+    const double c = std::cos(back), s = std::sin(back);
+    for (Index i = 0; i < V.size(); ++i) {
+        if (V.pinned[i]) continue;
+        const Vec3 r = V.x[i] - pin;
+        const Vec3 to = pin + Vec3(c * r.x() + s * r.z(), r.y(), c * r.z() - s * r.x());
+        V.v[i] += (to - V.x[i]) / scene.dt;
+        V.x[i] = to;
+    }
+    turnRate = allowed;
+    return true;
+}
+
 } // namespace pf

@@ -42,4 +42,25 @@ bool holdOnDesk(Vertices& verts, const std::vector<Vec3>& stepStart,
                 const std::vector<std::uint8_t>& contact, const DeskHoldScene& scene,
                 double& slide);
 
+// The same law for a sheet hanging from one still pin with a part of it on the desk.
+// Nothing but the desk's friction (and the air) can turn such a sheet about the
+// vertical through its pin: gravity, the pin's pull and the desk's push are vertical
+// or act on that axis. Yet in the model the desk's friction turned it, for good: the
+// bending solve, once every few sub-steps, kicks the corner on the desk back against
+// the turn, the desk's friction in that sub-step stops the kick, and in the sub-steps
+// between, where the corner meets no friction, the sheet carries it on (docs/material.md,
+// "What is open": office paper turned at 0.12-0.14 rad/s after a user took out one of
+// the `drape`'s two pins). Real paper turning so has its corner slide on the desk,
+// whose friction, μk times the corner's load at its distance from the axis, slows the
+// turn. So the sheet's rigid turn about that vertical (fitted to all its free vertices'
+// moves over the step) may only slow down from one step to the next, by at least that
+// torque over the sheet's moment of inertia about the axis, the load being what the
+// desk pushed up on each vertex over the step (deskImpulse, N·s). What it gains beyond
+// that is undone, as a rigid turn of the whole sheet about the axis, which moves the pin
+// not at all and changes no length. turnRate is the turn's rate at the step before (rad/s,
+// or kSlideUnknown) and becomes this step's. Returns whether a part was undone.
+bool holdTurnOnDesk(Vertices& verts, const Vec3& pin, const std::vector<Vec3>& stepStart,
+                    const std::vector<double>& deskImpulse, const DeskHoldScene& scene,
+                    double& turnRate);
+
 } // namespace pf

@@ -51,8 +51,10 @@ struct PaperState {
     StillWatch still;
     // Over about the last half second (kSlowStillAveraging): cycles of about a second.
     StillWatch slowStill;
-    // How fast the sheet slid across the desk, as a whole, in the step before (m/s),
-    // or kSlideUnknown (sim/DeskHold.h).
+    // How fast the sheet slid across the desk, as a whole, in the step before (m/s), or
+    // for a sheet hanging from one pin onto it, how fast it turned about the vertical
+    // through the pin (rad/s); or kSlideUnknown (sim/DeskHold.h). Which one it is follows
+    // from the pins, and a change of pins wakes the sheet, which forgets it.
     double deskSlide = kSlideUnknown;
     friend bool operator==(const PaperState&, const PaperState&) = default;
 

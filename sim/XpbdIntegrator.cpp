@@ -2,6 +2,7 @@
 
 #include "AirDrag.h"
 #include "DeskHold.h"
+#include "PinPivot.h"
 #include "TriangleGeometry.h"
 
 #include <algorithm>
@@ -850,6 +851,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
     // (μ_tool > μ_desk), decides the slide, and the desk only keeps it above itself.
     touched_.assign(static_cast<std::size_t>(nv), 0);
     onDesk_.assign(static_cast<std::size_t>(nv), 0);
+    deskImpulse_.assign(static_cast<std::size_t>(nv), 0.0);
     // The tool touches the paper's triangles, not only its vertices: a sphere resting
     // on the desk meets the sheet in a patch a few millimetres wide, smaller than a
     // cell, and would otherwise slide over the paper between vertices without holding
@@ -981,7 +983,9 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         const double lambda = std::min(len / (w_[hand] + kGripCompliance / h2), kHandForce * h2);
         V.x[hand] -= (w_[hand] * lambda / len) * e;
     };
-    const auto collideGround = [&](bool withFriction) {
+    // `over` is the time the push's change of velocity is spread over: a sub-step's, or
+    // the whole step's after the projection.
+    const auto collideGround = [&](bool withFriction, double over) {
         if (!contacts_.ground) return;
         const double gh = contacts_.groundHeight;
         for (Index i = 0; i < nv; ++i) {
@@ -989,6 +993,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
             const double push = gh - V.x[i].y();
             V.x[i].y() = gh;
             onDesk_[i] = 1;
+            deskImpulse_[i] += V.m[i] * push / over;
             if (touched_[i] || !withFriction) continue;
             Vec3 slip = V.x[i] - xPrev_[i];
             slip.y() = 0.0;
@@ -1043,7 +1048,7 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         collideSphere(c, cPrev, true);
         pullWithTool(c);
         holdByHand(sub);
-        collideGround(true);
+        collideGround(true, h);
         touchLayers(true);
         stretchStep_.relax(V.x);
         // Long-range attachments (Kim et al. 2012): no vertex gets farther from its
@@ -1060,9 +1065,9 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
         // thickness into it once the air slowed the layer's flutter.
         touchLayers(false);
         collideSphere(c, cPrev, false);
-        collideGround(false);
+        collideGround(false, h);
         collideSphere(c, cPrev, false);
-        collideGround(false);
+        collideGround(false, h);
         for (Index i = 0; i < nv; ++i)
             if (w_[i] != 0.0) V.v[i] = (V.x[i] - xPrev_[i]) / h;
     }
@@ -1081,12 +1086,18 @@ void XpbdIntegrator::advance(Sheet& sheet, const SimParams& params) {
                        hanging ? kDampedProjectionCompliance : kProjectionCompliance);
     holdToolWhereThePaperIsTaut(
         sphereStart, [&](const Vec3& c) { collideSphere(c, c, false); }, toolInThePaper, sheet);
-    collideGround(false);
-    const bool onlyTheDesk =
-        contacts_.ground && (!sp.active || toolTriangles_.empty()) && grips.empty() && pins == 0;
-    if (onlyTheDesk)
-        holdOnDesk(V, stepStart_, onDesk_, {g, params.dt, mat.groundKineticFriction},
-                   paper.deskSlide);
+    collideGround(false, params.dt);
+    // Coulomb's law for the sheet as a whole (sim/DeskHold.h): on the desk alone, or
+    // hanging from one still pin onto it. Neither while a tool, a grip or a hand acts.
+    const bool deskWithoutTool =
+        contacts_.ground && (!sp.active || toolTriangles_.empty()) && grips.empty();
+    const DeskHoldScene desk{g, params.dt, mat.groundKineticFriction};
+    const Pivot pivot = deskWithoutTool && pins > 0 ? pivotOf(V) : Pivot{};
+    if (deskWithoutTool && pins == 0)
+        holdOnDesk(V, stepStart_, onDesk_, desk, paper.deskSlide);
+    else if (deskWithoutTool && hand < 0 && pivot.kind == Pivot::Kind::Point &&
+             !aPinMoves(V, kNone))
+        holdTurnOnDesk(V, pivot.point, stepStart_, deskImpulse_, desk, paper.deskSlide);
     else
         paper.deskSlide = kSlideUnknown;
 

@@ -291,6 +291,7 @@ class XpbdIntegrator final : public Integrator {
     std::vector<Vec3> airNormals_;      // dragThroughAir's scratch
     std::vector<std::uint8_t> touched_; // touched by the tool in this sub-step
     std::vector<std::uint8_t> onDesk_;  // held up by the desk in this step
+    std::vector<double> deskImpulse_;   // what the desk pushed up on each vertex, N·s
     std::vector<Index> toolTriangles_;  // triangles the tool may reach in this step
     // Fast projection: the stretched constraints, their directions, and which of them
     // meet at each vertex.
