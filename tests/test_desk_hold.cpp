@@ -66,6 +66,14 @@ constexpr double kLeastSlowing = kKinetic * kG * kDt;
 
 const std::vector<std::uint8_t> kAll(25, 1);
 
+// The editor's sheet lying flat on the desk, without breaks or hinges.
+World flatSheetOnTheDesk() {
+    World w = makeEditorScene("press", SceneOptions{}, 0.03);
+    w.params.integrator = "xpbd";
+    w.params.breaking = w.params.hinges = false;
+    return w;
+}
+
 } // namespace
 
 class TestDeskHold : public QObject {
@@ -208,9 +216,7 @@ class TestDeskHold : public QObject {
         // The rule must not cut a real slide short: a flat sheet thrown across the desk
         // at u stops after u² / (2 μk g) under the sub-steps' friction, and the rule binds
         // only on a slide that slows less.
-        World w = makeEditorScene("press", SceneOptions{}, 0.03);
-        w.params.integrator = "xpbd";
-        w.params.breaking = w.params.hinges = false;
+        World w = flatSheetOnTheDesk();
         const double u = 0.3; // m/s
         for (Vec3& v : w.sheet.verts.v) v = Vec3(u, 0.0, 0.0);
         const double mu = w.params.material.groundKineticFriction;
@@ -293,9 +299,7 @@ class TestDeskHold : public QObject {
         // The rule must not cut a real turn short: a flat sheet pinned at a corner and
         // set turning about the vertical through the pin at ω stops after ω² / (2 α),
         // α = μk g Σ m r / Σ m r², under the sub-steps' friction.
-        World w = makeEditorScene("press", SceneOptions{}, 0.03);
-        w.params.integrator = "xpbd";
-        w.params.breaking = w.params.hinges = false;
+        World w = flatSheetOnTheDesk();
         auto& V = w.sheet.verts;
         V.pinned[0] = 1;
         const Vec3 pin = V.x[0];
