@@ -20,6 +20,7 @@ struct Swing {
     Vec3 axis = Vec3::Zero();
     double amplitude = 0.0; // rad; 0 when the sheet does not swing as a pendulum
     double breadth = 0.0;   // m
+    double frequency = 0.0; // Ω, rad/s; 0 when the sheet does not swing as a pendulum
 };
 
 // A pendulum at angle θ from hanging turning at ω_a has the amplitude
@@ -51,6 +52,7 @@ Swing swingOf(const Vertices& V, const Turns& turns, const Pivot& pivot, const V
     s.axis = a;
     s.amplitude = std::sqrt(angle * angle + turning * turning * aboutAxis / pull);
     s.breadth = hi - lo;
+    s.frequency = std::sqrt(pull / aboutAxis);
     return s;
 }
 
@@ -89,6 +91,11 @@ void dragDeformingThroughAir(Vertices& V, const Turns& turns, const std::vector<
 }
 
 } // namespace
+
+double airSkinFriction(double swingFrequency, double arealDensity) {
+    if (!(swingFrequency > 0.0) || !(arealDensity > 0.0)) return 0.0;
+    return kAirDensity * std::sqrt(2.0 * kAirKinematicViscosity * swingFrequency) / arealDensity;
+}
 
 double oscillatingPlateDrag(double displacementAmplitude, double breadth) {
     if (!(displacementAmplitude > 0.0) || !(breadth > 0.0)) return kPlateDragCoefficient;
@@ -157,19 +164,24 @@ void dragThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravity, doub
     // change, it leaves the sheet's shape alone: applied vertex by vertex along the
     // normals of crumpled paper, it pulled neighbours apart (tissue's crumple-cycles
     // reached 10.5 % stretch). A sheet swinging from its pins meets the drag of a plate
-    // in oscillating flow, each vertex at the width of its own swing.
+    // in oscillating flow, each vertex at the width of its own swing, and its motion
+    // along the paper meets the viscous drag of the air's Stokes layer.
     const Swing swing = swingOf(V, turns, pivot, omega, centre / mass, mass, inertia, gravity);
+    const double skin = airSkinFriction(swing.frequency, arealDensity);
     Vec3 angularImpulse = Vec3::Zero();
     for (Index i = 0; i < nv; ++i) {
         if (!turns(i)) continue;
         const Vec3 r = V.x[i] - o;
         const Vec3& n = normals[i];
-        const double un = omega.cross(r).dot(n);
+        const Vec3 u = omega.cross(r);
+        const double un = u.dot(n);
         // (A sheet that does not swing has no amplitude and meets the steady drag.)
         const double reach = (r - r.dot(swing.axis) * swing.axis).norm();
         const double k =
             perCoefficient * oscillatingPlateDrag(swing.amplitude * reach, swing.breadth);
         angularImpulse += V.m[i] * (un / (1.0 + dt * k * std::abs(un)) - un) * r.cross(n);
+        const Vec3 along = u - un * n;
+        angularImpulse += V.m[i] * r.cross(along / (1.0 + dt * skin) - along);
     }
     const Vec3 slowing = rotationFor(angularImpulse);
     if (!slowing.allFinite()) return;

@@ -29,7 +29,8 @@ namespace pf {
 //   is left and can never add energy. Tissue's lower part twisting against its pinned
 //   edge carried 77-88 % of its `drape`'s energy, which the rigid turn did not see: it
 //   slept at 18.3 s, office at 5.9; with this part 5.6 and 5.0.
-// The sheet's sliding in its own plane is left alone.
+// The sheet's sliding in its own plane meets the air only while it swings as a
+// pendulum in that plane (airSkinFriction below); otherwise it is left alone.
 //
 // A sheet swinging to and fro from its pins meets the air it stirred on the last
 // stroke, and far more drag than in steady flow (oscillatingPlateDrag): with steady
@@ -39,6 +40,8 @@ namespace pf {
 // flow, C_d = 1.17 (Hoerner, "Fluid-Dynamic Drag", 1965, ch. 3: square plate).
 inline constexpr double kAirDensity = 1.20;           // kg/m³
 inline constexpr double kPlateDragCoefficient = 1.17; // flat plate, broadside
+// Air at 20 °C: 1.81·10⁻⁵ Pa·s / 1.20 kg/m³.
+inline constexpr double kAirKinematicViscosity = 1.51e-5; // m²/s
 
 // Applies the drag of one step of `dt` seconds to the velocities of the free vertices
 // (pins move as their script says). Paper driven by pins that move is left to them: the
@@ -62,5 +65,19 @@ void dragThroughAir(Sheet& sheet, double arealDensity, const Vec3& gravity, doub
 // Keulegan-Carpenter numbers KC = U T / D = 2π X / D. It falls to the steady plate's
 // 1.17 at KC ≈ 320 and is held there beyond.
 double oscillatingPlateDrag(double displacementAmplitude, double breadth);
+
+// A sheet swinging as a pendulum in its own plane (hung from one pin, edge-on) pushes no
+// air aside; the air's viscosity alone slows it. A plate moving to and fro in its own
+// plane at angular frequency Ω drags a Stokes layer of thickness δ = √(2ν/Ω) with it
+// (Stokes' second problem; Landau & Lifshitz, "Fluid Mechanics", §24), and the part of
+// the wall's shear in phase with the plate's velocity u, the part that takes energy, is
+// μ u / δ = ρ √(νΩ/2) u on each face. Both faces, per unit of the paper's mass: a
+// linear drag of rate ρ √(2νΩ) / ρ_A (1/s), so a swing's amplitude dies as e^(−t/τ) with
+// τ = 2 ρ_A / (ρ √(2νΩ)): 10 s for office paper swinging once a second. The layer holds
+// while the swing is short of the sheet's length along it; a swing wider than that
+// meets the steady (Blasius) layer, which drags more. Without it a sheet hung from one
+// corner swung edge-on for minutes (0.25 rad, 0.55 m/s at its far corner, 14 % of it
+// gone in 20 s).
+double airSkinFriction(double swingFrequency, double arealDensity);
 
 } // namespace pf
