@@ -349,7 +349,7 @@ class TestAirDrag : public QObject {
     // pendulum obeys θ'' = −Ω² sin θ − c θ' with c = ρ √(2νΩ) / ρ_A, whatever the plate's
     // shape: its swing dies as e^(−c t / 2). The model is checked against that equation
     // integrated finely. (Without the layer nothing slowed the swing: the far corner of a
-    // sheet hung from one corner swung at 0.55 m/s for minutes.)
+    // sheet hung from one corner swung at 0.44 m/s after a minute.)
     void aPlateSwingingInItsOwnPlaneMeetsTheViscousDragOfAStokesLayer() {
         const Material office;
         Sheet sheet = officePlate(41);
@@ -550,12 +550,12 @@ class TestAirDrag : public QObject {
 
     // The same sheet hung 10 cm higher from one corner, clear of the desk: it swings
     // edge-on, in its own plane, and only the air's viscosity (the Stokes layer above)
-    // slows that. Without the layer its far corner still moved at 0.55 m/s (office),
-    // 1 m/s (card) after a minute and a half, and tissue had not slept. Now office and
-    // tissue fall asleep (at 38.9 and 11.2 s), and card's swing, three times heavier for
-    // the same air, loses energy at about the layer's rate, e^(−c t) with c ≈ 0.06/s at
-    // Ω ≈ 6 rad/s: 0.28 of it is left after 20 s, and 0.25 is measured (without the
-    // layer, 0.91).
+    // slows that. Without the layer its far corner still moved at 0.44 m/s (office) after
+    // a minute and 0.92 m/s (card) after a minute and a half, and tissue had not slept
+    // by then. Now office and tissue fall asleep (at 38.9 and 11.2 s), and card's swing,
+    // three times heavier for the same air, loses energy at about the layer's rate,
+    // e^(−c t) with c = 0.067/s at Ω = 6.4 rad/s: 0.26 of it is left after 20 s, and 0.25
+    // is measured (without the layer, 0.91).
     void aSheetHungClearOfTheDeskStopsSwingingEdgeOn_data() {
         QTest::addColumn<QString>("paper");
         QTest::addColumn<double>("asleepBefore"); // s; 0: the swing's energy is measured
