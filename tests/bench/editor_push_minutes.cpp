@@ -4,7 +4,9 @@
 // REST_SECONDS (default 10); PUSH_SHEET=file.paper opens that sheet first (a large one
 // measures the editor at scale); PUSH_THREADS=n steps on n threads (default: the
 // editor's setting); PUSH_WINDOW=WxH sizes the window; PUSH_SHOT=file.png saves the window at the
-// end, PUSH_SAVE=file.paper the sheet. Every 10 s it prints the sheet's size, the step's cost,
+// end, PUSH_SAVE=file.paper the sheet, PUSH_RECORDING=file.paperrec the session (which
+// `paperfold replay` steps again headless, bit for bit, to time or profile the simulation
+// without the view drawing beside it). Every 10 s it prints the sheet's size, the step's cost,
 // frames drawn per second and how much simulated time passed per second of wall time: the editor
 // keeps up with real time while that stays at 1.
 //   xvfb-run -a -s "-screen 0 1280x1024x24" build/tests/editor_push_minutes
@@ -12,6 +14,7 @@
 #include "BenchWindow.h"
 #include "MainWindow.h"
 #include "RandomStroke.h"
+#include "RecordingFile.h"
 #include "SheetSnapshot.h"
 #include "SimulationThread.h"
 #include "Viewport.h"
@@ -130,6 +133,11 @@ int main(int argc, char** argv) {
     if (const char* shot = std::getenv("PUSH_SHOT"))
         window.grab().save(QString::fromLocal8Bit(shot));
     if (const char* save = std::getenv("PUSH_SAVE")) window.saveFile(QString::fromLocal8Bit(save));
+    if (const char* recording = std::getenv("PUSH_RECORDING")) {
+        QString error;
+        if (!saveRecording(sim->copyRecording(), QString::fromLocal8Bit(recording), &error))
+            std::fprintf(stderr, "%s\n", qPrintable(error));
+    }
     window.close();
     return worst >= 0.9 ? 0 : 1;
 }
