@@ -235,7 +235,8 @@ class XpbdIntegrator final : public Integrator {
     void projectStretch(Sheet& sheet, double dt, int iterations, double compliance);
     void relaxWhatTheProjectionLeft(Sheet& sheet, double dt, int sweeps);
     // Pushes the paper out of the tool at the end of the step, and stops the tool short
-    // (toolHeldAt_) where that would stretch taut paper; `from` is where it began.
+    // (toolHeldAt_) where that would stretch taut paper; `from` is where it began, and
+    // paper that lies in the tool there pushes it back behind it.
     void holdToolWhereThePaperIsTaut(const Vec3& from,
                                      const std::function<void(const Vec3&)>& pushOut,
                                      bool toolInThePaper, Sheet& sheet);
